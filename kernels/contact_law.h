@@ -1,0 +1,66 @@
+#pragma once
+// The contact law: one rounded corner of the cask against the floor surface, as a
+// spring-slider (Cundall & Strack 1979; Cundall, "Formulation of a three-dimensional
+// distinct element model", 1988; UDEC's corner-edge contact).
+//
+// The corner is an arc of radius r; against the flat floor its contact normal is the floor
+// normal n = (0, 1) and the contact point lies under the arc's centre.
+//
+//   overlap        d = max(0, r - y_c),  y_c the height of the arc centre
+//   normal force   F_n = max(0, K_n d - beta K_n v_n)        no tension, dashpot included
+//   shear spring   F_s* = F_s(previous) - K_s v_s dt         incremental: the spring stretches by the slip
+//   Coulomb        slipping if |F_s*| > mu F_n; then the spring force is mu F_n sign(F_s*)
+//   shear dashpot  -beta K_s v_s while the contact sticks; a slipping contact transmits
+//                  exactly mu F_n, so the applied shear force is clipped to |F_s| <= mu F_n
+//
+// v_n and v_s are the normal and tangential velocities of the contact point relative to the
+// floor, at the half step (central differences). beta is the stiffness-proportional
+// (Rayleigh) damping coefficient: a damping ratio h at circular frequency omega gives
+// beta = 2 h / omega (Clough & Penzien, Dynamics of Structures, eq. 12-37). A corner out of
+// contact carries no force and forgets its shear spring.
+
+#include "kernels/friction_law.h"
+#include "kernels/lane.h"
+#include "kernels/lane_state.h"
+#include "kernels/model.h"
+
+namespace caskdem::kernels {
+
+template <class T>
+struct CornerContact {
+  T normal_force;   // on the cask, along +y
+  T shear_force;    // on the cask, along +x
+  CornerState<T> next;  // spring-slider state after this step
+};
+
+template <FrictionLaw Law, class T>
+inline CornerContact<T> corner_contact(const Model& model, const LaneParameters<T>& lane_parameters, int corner,
+                                       const T& gap, const T& normal_velocity, const T& slip_velocity,
+                                       const CornerState<T>& previous) {
+  using lane::broadcast;
+  using lane::select;
+  const T zero = broadcast<T>(0.0);
+  const T normal_stiffness = broadcast<T>(model.corner_normal_stiffness[corner]) * lane_parameters.stiffness_scale;
+  const T shear_stiffness = broadcast<T>(model.corner_shear_stiffness[corner]) * lane_parameters.stiffness_scale;
+  const T beta = lane_parameters.damping_beta;
+
+  const auto touching = gap < zero;
+  const T overlap = select(touching, -gap, zero);
+  // No tension: the spring and the dashpot together may push but never pull.
+  const T normal_force = select(touching, lane::max(normal_stiffness * overlap - beta * normal_stiffness * normal_velocity, zero), zero);
+
+  const auto was_slipping = previous.slipping > broadcast<T>(0.5);
+  const T mu = friction_coefficient<Law>(model, lane_parameters, lane::abs(slip_velocity), was_slipping);
+  const T limit = mu * normal_force;
+  const T trial = previous.shear_spring - shear_stiffness * slip_velocity * broadcast<T>(model.time_step);
+  const auto slipping = touching && (lane::abs(trial) > limit);
+  // Both branches computed, blended per lane: slip caps the spring at mu F_n, stick keeps
+  // the trial force, an open contact resets it.
+  const T spring = select(slipping, lane::copysign(limit, trial), select(touching, trial, zero));
+  const T dashpot = select(touching && !slipping, -beta * shear_stiffness * slip_velocity, zero);
+  const T shear_force = lane::clamp(spring + dashpot, -limit, limit);
+
+  return {normal_force, shear_force, {spring, lane::as_number<T>(slipping)}};
+}
+
+}  // namespace caskdem::kernels

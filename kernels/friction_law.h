@@ -1,0 +1,57 @@
+#pragma once
+// The friction law: the coefficient mu that limits a contact's shear force, |F_s| <= mu F_n
+// (Mohr-Coulomb without cohesion). The source paper found the kinetic coefficient of a
+// steel cask on its floor to fall with sliding velocity (its Fig. 3); four laws cover the
+// cases a user meets:
+//
+//   constant        mu = mu_s
+//   static_kinetic  mu = mu_s while the contact sticks, mu_k from the step after it slips
+//                   (the spring-slider remembers whether it slipped)
+//   exponential     mu(v) = mu_k + (mu_s - mu_k) exp(-|v| / v0)
+//                   (mu_s at rest, mu_k at high slip speed; mu_k > mu_s gives a rising law;
+//                   Dieterich-type velocity weakening, e.g. Bowden & Tabor, and the form the
+//                   source paper fitted to its friction tests)
+//   tabulated       mu(|v|) linear between the rows of a measured table, constant beyond
+//
+// v is the slip velocity of the contact point relative to the floor.
+
+#include "kernels/lane.h"
+#include "kernels/lane_state.h"
+#include "kernels/model.h"
+#include "kernels/portable_math.h"
+
+namespace caskdem::kernels {
+
+template <class T>
+inline T tabulated_friction(const Model& model, const T& slip_speed) {
+  using lane::broadcast;
+  T mu = broadcast<T>(model.friction_table_coefficient[0]);
+  for (int row = 1; row < model.friction_table_size; ++row) {
+    const double v0 = model.friction_table_speed[row - 1];
+    const double v1 = model.friction_table_speed[row];
+    const double mu0 = model.friction_table_coefficient[row - 1];
+    const double slope = (model.friction_table_coefficient[row] - mu0) / (v1 - v0);
+    T v = lane::clamp(slip_speed, broadcast<T>(v0), broadcast<T>(v1));
+    T segment = broadcast<T>(mu0) + broadcast<T>(slope) * (v - broadcast<T>(v0));
+    // Rows are visited in increasing speed, so the last segment the speed reached wins.
+    mu = lane::select(slip_speed >= broadcast<T>(v0), segment, mu);
+  }
+  return mu;
+}
+
+template <FrictionLaw Law, class T>
+inline T friction_coefficient(const Model& model, const LaneParameters<T>& lane_parameters, const T& slip_speed,
+                              const lane::Mask<T>& was_slipping) {
+  if constexpr (Law == FrictionLaw::constant) {
+    return lane_parameters.friction_static;
+  } else if constexpr (Law == FrictionLaw::static_kinetic) {
+    return lane::select(was_slipping, lane_parameters.friction_kinetic, lane_parameters.friction_static);
+  } else if constexpr (Law == FrictionLaw::exponential) {
+    const T decay = exp_negative(slip_speed * lane_parameters.inverse_decay_speed);
+    return lane_parameters.friction_kinetic + (lane_parameters.friction_static - lane_parameters.friction_kinetic) * decay;
+  } else {
+    return tabulated_friction(model, slip_speed);
+  }
+}
+
+}  // namespace caskdem::kernels

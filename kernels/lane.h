@@ -1,0 +1,132 @@
+#pragma once
+// Lane arithmetic. The step (kernels/step.h) is written once against these functions and
+// compiles for T = double (one realisation: the scalar reference path) and for
+// T = xsimd::batch<double, Arch> (one realisation per SIMD lane: the ensemble path).
+//
+// Every function here is exact or correctly rounded (IEEE +,-,*,/,sqrt, compare, blend,
+// min/max, abs, copysign, nearbyint), so the scalar path and every SIMD width give the
+// same bits, provided the build forbids FMA contraction (-ffp-contract=off).
+// min/max follow the x86 minpd/maxpd rule (the second operand when either is NaN);
+// the scalar overloads are written to match it.
+
+#include <cmath>
+#include <cstddef>
+#include <type_traits>
+
+#include <xsimd/xsimd.hpp>
+
+namespace caskdem::lane {
+
+template <class T>
+struct Traits;
+
+template <>
+struct Traits<double> {
+  using Mask = bool;
+  static constexpr std::size_t width = 1;
+};
+
+template <class Arch>
+struct Traits<xsimd::batch<double, Arch>> {
+  using Mask = xsimd::batch_bool<double, Arch>;
+  static constexpr std::size_t width = xsimd::batch<double, Arch>::size;
+};
+
+template <class T>
+using Mask = typename Traits<T>::Mask;
+
+template <class T>
+inline constexpr std::size_t width = Traits<T>::width;
+
+// ---- scalar (T = double) -------------------------------------------------------------
+inline double select(bool mask, double if_true, double if_false) { return mask ? if_true : if_false; }
+inline double min(double a, double b) { return a < b ? a : b; }
+inline double max(double a, double b) { return a > b ? a : b; }
+inline double abs(double a) { return std::fabs(a); }
+inline double sqrt(double a) { return std::sqrt(a); }
+inline double copysign(double magnitude, double sign) { return std::copysign(magnitude, sign); }
+inline double nearbyint(double a) { return std::nearbyint(a); }
+inline bool isfinite(double a) { return std::isfinite(a); }
+inline bool any(bool m) { return m; }
+inline bool all(bool m) { return m; }
+
+// ---- wide (T = xsimd::batch<double, Arch>) -------------------------------------------
+template <class A>
+inline xsimd::batch<double, A> select(const xsimd::batch_bool<double, A>& mask, const xsimd::batch<double, A>& if_true,
+                                      const xsimd::batch<double, A>& if_false) {
+  return xsimd::select(mask, if_true, if_false);
+}
+template <class A>
+inline xsimd::batch<double, A> min(const xsimd::batch<double, A>& a, const xsimd::batch<double, A>& b) {
+  return xsimd::min(a, b);
+}
+template <class A>
+inline xsimd::batch<double, A> max(const xsimd::batch<double, A>& a, const xsimd::batch<double, A>& b) {
+  return xsimd::max(a, b);
+}
+template <class A>
+inline xsimd::batch<double, A> abs(const xsimd::batch<double, A>& a) {
+  return xsimd::abs(a);
+}
+template <class A>
+inline xsimd::batch<double, A> sqrt(const xsimd::batch<double, A>& a) {
+  return xsimd::sqrt(a);
+}
+template <class A>
+inline xsimd::batch<double, A> copysign(const xsimd::batch<double, A>& magnitude, const xsimd::batch<double, A>& sign) {
+  return xsimd::copysign(magnitude, sign);
+}
+template <class A>
+inline xsimd::batch<double, A> nearbyint(const xsimd::batch<double, A>& a) {
+  return xsimd::nearbyint(a);
+}
+template <class A>
+inline xsimd::batch_bool<double, A> isfinite(const xsimd::batch<double, A>& a) {
+  return xsimd::isfinite(a);
+}
+template <class A>
+inline bool any(const xsimd::batch_bool<double, A>& m) {
+  return xsimd::any(m);
+}
+template <class A>
+inline bool all(const xsimd::batch_bool<double, A>& m) {
+  return xsimd::all(m);
+}
+
+// ---- both ----------------------------------------------------------------------------
+template <class T>
+inline T broadcast(double value) {
+  if constexpr (std::is_same_v<T, double>) {
+    return value;
+  } else {
+    return T(value);
+  }
+}
+
+// Aligned load and store of one lane (double) or one batch from a structure-of-arrays field.
+template <class T>
+inline T load(const double* field) {
+  if constexpr (std::is_same_v<T, double>) {
+    return *field;
+  } else {
+    return T::load_aligned(field);
+  }
+}
+inline void store(double* field, double value) { *field = value; }
+template <class A>
+inline void store(double* field, const xsimd::batch<double, A>& value) {
+  value.store_aligned(field);
+}
+
+template <class T>
+inline T clamp(const T& value, const T& low, const T& high) {
+  return min(max(value, low), high);
+}
+
+// A mask as 1.0 / 0.0, for masks kept in double state arrays between steps.
+template <class T>
+inline T as_number(const Mask<T>& mask) {
+  return select(mask, broadcast<T>(1.0), broadcast<T>(0.0));
+}
+
+}  // namespace caskdem::lane

@@ -1,0 +1,141 @@
+#pragma once
+// One explicit central-difference step of the cask on its floor, for one realisation
+// (T = double) or one SIMD batch of realisations (T = xsimd::batch<double, Arch>).
+//
+// Equations of motion in the floor frame, which translates with the table (a relative
+// frame: the sliding displacement is the state itself, so integrating a record cannot make
+// it drift; the table's motion enters only as an inertial force):
+//
+//   m x''     = sum F_s - m a_h(t)
+//   m y''     = sum F_n - m (g + a_v(t))
+//   I theta'' = sum (l_x F_n - l_y F_s)        l: contact point relative to the centre of mass
+//
+// Central differences (the DEM's explicit scheme; Cundall 1971, Hart et al. 1988):
+//   v(n+1/2) = v(n-1/2) + a(n) dt,   x(n+1) = x(n) + v(n+1/2) dt,
+// with contact forces from positions at t_n and dashpot and shear-spring increments from
+// velocities at t_{n-1/2}. The step observes the state at t_n (running maxima, impacts, end
+// criteria) before advancing it; a lane that has stopped keeps its state.
+
+#include "kernels/contact_law.h"
+#include "kernels/lane.h"
+#include "kernels/lane_state.h"
+#include "kernels/model.h"
+#include "kernels/portable_math.h"
+
+namespace caskdem::kernels {
+
+template <FrictionLaw Law, class T>
+inline void step(const Model& model, const LaneParameters<T>& p, double table_horizontal, double table_vertical,
+                 double time, BodyState<T>& body, CornerState<T>* corners, Response<T>& response,
+                 ContactForces<T>* forces = nullptr) {
+  using lane::broadcast;
+  using lane::select;
+  const T zero = broadcast<T>(0.0);
+  const T one = broadcast<T>(1.0);
+  const T dt = broadcast<T>(model.time_step);
+  const T radius = broadcast<T>(model.rounding_radius);
+  const auto active = response.status == zero;
+
+  // ---- contact forces at t_n -----------------------------------------------------------
+  const SinCos<T> rotation = sin_cos(body.theta);
+  const T s = rotation.sin;
+  const T c = rotation.cos;
+  T force_x = zero, force_y = zero, moment = zero;
+  T lowest_gap = broadcast<T>(1e300);
+  T uplift = zero;
+  CornerState<T> next[kMaxCorners];
+  for (int k = 0; k < model.corner_count; ++k) {
+    const T arm_x = broadcast<T>(model.corner_x[k]) - p.centre_x;  // arc centre from the centre of mass, body frame
+    const T arm_y = broadcast<T>(model.corner_y[k]) - p.centre_y;
+    const T centre_x = c * arm_x - s * arm_y;  // ... and in the floor frame
+    const T centre_y = s * arm_x + c * arm_y;
+    const T gap = body.y + centre_y - radius;
+    const T lever_x = centre_x;  // contact point: the bottom of the arc
+    const T lever_y = centre_y - radius;
+    const T normal_velocity = body.vy + body.omega * lever_x;
+    const T slip_velocity = body.vx - body.omega * lever_y;
+    const CornerContact<T> contact = corner_contact<Law>(model, p, k, gap, normal_velocity, slip_velocity, corners[k]);
+    force_x = force_x + contact.shear_force;
+    force_y = force_y + contact.normal_force;
+    moment = moment + (lever_x * contact.normal_force - lever_y * contact.shear_force);
+    next[k] = contact.next;
+    lowest_gap = lane::min(lowest_gap, gap);
+    uplift = lane::max(uplift, gap - broadcast<T>(model.corner_rest_gap[k]));
+    if (forces) {
+      forces->normal[k] = contact.normal_force;
+      forces->shear[k] = contact.shear_force;
+    }
+  }
+
+  // ---- observe the state at t_n ----------------------------------------------------------
+  const T base_x = body.x - c * p.centre_x + s * p.centre_y;  // body-frame origin, the base centre
+  const T slide = base_x - response.base_x0;
+  const T abs_rotation = lane::abs(body.theta);
+  const T abs_omega = lane::abs(body.omega);
+  if (forces) {
+    forces->uplift = uplift;
+    forces->slide = slide;
+  }
+
+  const auto finite = lane::isfinite(body.x + body.y + body.theta + body.vx + body.vy + body.omega);
+  const auto tipped = abs_rotation >= broadcast<T>(model.tip_over_angle);
+  const auto left_floor = lowest_gap > broadcast<T>(model.lift_off_height);
+  const double pad = model.pad_clearance > 0.0 ? model.pad_clearance : 1e300;
+  const auto slid_off = lane::abs(slide) > broadcast<T>(pad);
+  // First matching criterion wins: a NaN state says nothing about tipping.
+  T verdict = select(slid_off, broadcast<T>(double(LaneStatus::slid_off_pad)), zero);
+  verdict = select(left_floor, broadcast<T>(double(LaneStatus::left_floor)), verdict);
+  verdict = select(tipped, broadcast<T>(double(LaneStatus::tipped_over)), verdict);
+  verdict = select(!finite, broadcast<T>(double(LaneStatus::non_finite)), verdict);
+  response.status = select(active, verdict, response.status);
+  const auto running = response.status == zero;
+  const auto observing = active && finite;  // a non-finite state is flagged, never recorded
+
+  Response<T>& r = response;
+  r.end_time = select(active, broadcast<T>(time), r.end_time);
+  r.max_abs_rotation = select(observing, lane::max(r.max_abs_rotation, abs_rotation), r.max_abs_rotation);
+  r.max_abs_slide = select(observing, lane::max(r.max_abs_slide, lane::abs(slide)), r.max_abs_slide);
+  r.max_uplift = select(observing, lane::max(r.max_uplift, uplift), r.max_uplift);
+  r.final_rotation = select(observing, body.theta, r.final_rotation);
+  r.final_slide = select(observing, slide, r.final_slide);
+
+  // Rocking half-cycles: the side changes when theta passes the threshold on the other
+  // side; each change is an impact. A half-cycle's peak |omega| is taken while the cask
+  // falls toward the impact (theta omega < 0), as on a measured record: the impact that
+  // opened the half-cycle is still decelerating the cask when the side changes.
+  const T threshold = broadcast<T>(model.rocking_threshold_angle);
+  T side = select(body.theta > threshold, one, select(body.theta < -threshold, -one, r.rocking_side));
+  const auto flip = observing && (side * r.rocking_side < zero);
+  for (int j = 0; j < kPeakCount; ++j) {
+    r.peak[j] = select(flip && (r.impacts == broadcast<T>(double(j))), r.current_peak, r.peak[j]);
+  }
+  r.impacts = select(flip, r.impacts + one, r.impacts);
+  const auto falling = observing && (body.theta * body.omega < zero);
+  r.current_peak = select(flip, zero, select(falling, lane::max(r.current_peak, abs_omega), r.current_peak));
+  r.rocking_side = select(observing, side, r.rocking_side);
+
+  const auto above = abs_rotation > broadcast<T>(model.stability_angle);
+  const auto rose_past_alpha = observing && above && (r.above_stability < broadcast<T>(0.5));
+  r.instability_time = select(rose_past_alpha, broadcast<T>(time), r.instability_time);
+  r.above_stability = select(observing, lane::as_number<T>(above), r.above_stability);
+
+  // ---- advance to t_{n+1} (stopped lanes keep their state) --------------------------------
+  const T accel_x = force_x * p.inverse_mass - p.horizontal_scale * broadcast<T>(table_horizontal);
+  const T accel_y = force_y * p.inverse_mass - (broadcast<T>(model.gravity) + p.vertical_scale * broadcast<T>(table_vertical));
+  const T accel_theta = moment * p.inverse_inertia;
+  const T vx = body.vx + accel_x * dt;
+  const T vy = body.vy + accel_y * dt;
+  const T omega = body.omega + accel_theta * dt;
+  body.x = select(running, body.x + vx * dt, body.x);
+  body.y = select(running, body.y + vy * dt, body.y);
+  body.theta = select(running, body.theta + omega * dt, body.theta);
+  body.vx = select(running, vx, body.vx);
+  body.vy = select(running, vy, body.vy);
+  body.omega = select(running, omega, body.omega);
+  for (int k = 0; k < model.corner_count; ++k) {
+    corners[k].shear_spring = select(running, next[k].shear_spring, corners[k].shear_spring);
+    corners[k].slipping = select(running, next[k].slipping, corners[k].slipping);
+  }
+}
+
+}  // namespace caskdem::kernels
