@@ -1,0 +1,209 @@
+#include "model/build.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+
+#include "kernels/portable_math.h"
+
+namespace caskdem {
+
+namespace {
+constexpr double kRestGapTolerance = 1e-12;  // m: a corner with a rest gap this small stands on the floor
+}
+
+RealisationParameters nominal_parameters(const ModelSpec& spec) {
+  RealisationParameters p;
+  p.mass = spec.section.mass;
+  p.inertia = spec.section.inertia;
+  p.centre_of_mass = spec.section.centre_of_mass;
+  return p;
+}
+
+double total_standing_normal_stiffness(const Model& model) {
+  double total = 0.0;
+  for (int k = 0; k < model.corner_count; ++k) {
+    if (model.corner_rest_gap[k] <= kRestGapTolerance) total += model.corner_normal_stiffness[k];
+  }
+  return total;
+}
+
+static double total_standing_shear_stiffness(const Model& model) {
+  double total = 0.0;
+  for (int k = 0; k < model.corner_count; ++k) {
+    if (model.corner_rest_gap[k] <= kRestGapTolerance) total += model.corner_shear_stiffness[k];
+  }
+  return total;
+}
+
+double damping_beta(const Model& model, const RealisationParameters& p) {
+  const double stiffness = total_standing_normal_stiffness(model) * p.stiffness_scale;
+  const double omega = p.damping_frequency > 0.0 ? p.damping_frequency : std::sqrt(stiffness / p.mass);
+  return 2.0 * p.damping_ratio / omega;
+}
+
+ModelFacts model_facts(const Model& model, const ModelSpec& spec, const RealisationParameters& p) {
+  ModelFacts f;
+  f.total_normal_stiffness = total_standing_normal_stiffness(model) * p.stiffness_scale;
+  f.total_shear_stiffness = total_standing_shear_stiffness(model) * p.stiffness_scale;
+  f.static_penetration = p.mass * model.gravity / f.total_normal_stiffness;
+  f.natural_frequency = std::sqrt(f.total_normal_stiffness / p.mass);
+  f.damping_beta = damping_beta(model, p);
+  f.stability_angle_positive = stability_angle(spec.section, +1);
+  f.stability_angle_negative = stability_angle(spec.section, -1);
+  // Upper bound on the highest rigid-body frequency on the springs: trace of M^-1 K.
+  double rotational = 0.0;
+  double low = 1e300, high = -1e300;
+  for (int k = 0; k < model.corner_count; ++k) {
+    if (model.corner_rest_gap[k] > kRestGapTolerance) continue;
+    const double arm_x = model.corner_x[k] - p.centre_of_mass.x;
+    const double arm_y = model.corner_y[k] - model.rounding_radius - p.centre_of_mass.y;
+    rotational += p.stiffness_scale * (model.corner_normal_stiffness[k] * arm_x * arm_x +
+                                       model.corner_shear_stiffness[k] * arm_y * arm_y);
+    low = std::min(low, model.corner_x[k]);
+    high = std::max(high, model.corner_x[k]);
+  }
+  f.half_span = 0.5 * (high - low);
+  f.highest_frequency = std::sqrt((f.total_normal_stiffness + f.total_shear_stiffness) / p.mass + rotational / p.inertia);
+  const double z = f.damping_beta * f.highest_frequency / 2.0;
+  f.stable_time_step = 2.0 / f.highest_frequency * (std::sqrt(1.0 + z * z) - z);
+  return f;
+}
+
+Model build_model(const ModelSpec& spec, const RealisationParameters& nominal) {
+  const std::vector<ContactCorner> corners = contact_corners(spec.section);
+  if (static_cast<int>(corners.size()) > kMaxCorners) {
+    throw std::invalid_argument("the section has " + std::to_string(corners.size()) +
+                                " corners facing the floor; at most " + std::to_string(kMaxCorners) + " are supported");
+  }
+  if (!(spec.stiffness.normal > 0.0) || !(spec.stiffness.shear > 0.0)) {
+    throw std::invalid_argument("the contact stiffnesses must be positive");
+  }
+  Model m;
+  m.corner_count = static_cast<int>(corners.size());
+  for (int k = 0; k < m.corner_count; ++k) {
+    m.corner_x[k] = corners[k].arc_centre.x;
+    m.corner_y[k] = corners[k].arc_centre.y;
+    m.corner_rest_gap[k] = corners[k].rest_gap;
+    m.corner_normal_stiffness[k] = spec.stiffness.normal * corners[k].contact_length * spec.section.depth;
+    m.corner_shear_stiffness[k] = spec.stiffness.shear * corners[k].contact_length * spec.section.depth;
+  }
+  m.rounding_radius = spec.section.rounding;
+  m.friction_law = spec.friction_law;
+  if (spec.friction_law == FrictionLaw::tabulated) {
+    const auto& table = spec.friction_table;
+    if (table.size() < 2 || static_cast<int>(table.size()) > kMaxFrictionTable) {
+      throw std::invalid_argument("a friction table needs 2 to " + std::to_string(kMaxFrictionTable) + " rows");
+    }
+    m.friction_table_size = static_cast<int>(table.size());
+    for (std::size_t i = 0; i < table.size(); ++i) {
+      if (i > 0 && !(table[i].first > table[i - 1].first)) {
+        throw std::invalid_argument("friction table speeds must increase strictly");
+      }
+      if (!(table[i].second >= 0.0)) throw std::invalid_argument("friction coefficients must be non-negative");
+      m.friction_table_speed[i] = table[i].first;
+      m.friction_table_coefficient[i] = table[i].second;
+    }
+  }
+  m.gravity = spec.gravity;
+
+  const double standing = total_standing_normal_stiffness(m);
+  if (!(standing > 0.0)) throw std::invalid_argument("no corner stands on the floor at rest");
+  if (!(spec.safety_factor > 0.0)) throw std::invalid_argument("the safety factor must be positive");
+  m.time_step = spec.time_step > 0.0 ? spec.time_step : spec.safety_factor * 2.0 * std::sqrt(nominal.mass / standing);
+
+  const double alpha_positive = stability_angle(spec.section, +1);
+  const double alpha_negative = stability_angle(spec.section, -1);
+  m.stability_angle = std::min(alpha_positive, alpha_negative);
+  m.tip_over_angle = spec.tip_over_angle > 0.0 ? spec.tip_over_angle : 0.5 * std::numbers::pi;
+  if (m.tip_over_angle <= std::max(alpha_positive, alpha_negative) || m.tip_over_angle > 0.5 * std::numbers::pi) {
+    throw std::invalid_argument("the tip-over angle must lie between the stability angle and 90 degrees");
+  }
+  m.lift_off_height = spec.lift_off_height > 0.0 ? spec.lift_off_height : 0.25 * section_height(spec.section);
+  if (spec.pad_half_width > 0.0) {
+    double base_half = 0.0;
+    for (const Point& p : spec.section.outline) base_half = std::max(base_half, std::abs(p.x));
+    m.pad_clearance = spec.pad_half_width - base_half;
+    if (!(m.pad_clearance > 0.0)) throw std::invalid_argument("the pad is narrower than the cask");
+  }
+
+  const ModelFacts facts = model_facts(m, spec, nominal);
+  // Twice the elastic tilt at which a corner would lift under a quasi-static push: rotations
+  // below it are the cask swaying on its springs, not rocking.
+  m.rocking_threshold_angle = 2.0 * facts.static_penetration / facts.half_span;
+  if (m.time_step > facts.stable_time_step) {
+    throw std::invalid_argument("the time step " + std::to_string(m.time_step) + " s exceeds the stability limit " +
+                                std::to_string(facts.stable_time_step) + " s of the contact springs; lower the safety factor");
+  }
+  return m;
+}
+
+LaneParameters<double> lane_parameters(const Model& model, const RealisationParameters& p) {
+  if (!(p.mass > 0.0) || !(p.inertia > 0.0)) throw std::invalid_argument("mass and inertia must be positive");
+  if (!(p.friction_static >= 0.0) || !(p.friction_kinetic >= 0.0)) {
+    throw std::invalid_argument("friction coefficients must be non-negative");
+  }
+  if (!(p.friction_decay_speed > 0.0)) throw std::invalid_argument("the friction decay speed must be positive");
+  if (!(p.damping_ratio >= 0.0)) throw std::invalid_argument("the damping ratio must be non-negative");
+  if (!(p.stiffness_scale > 0.0)) throw std::invalid_argument("the stiffness scale must be positive");
+  LaneParameters<double> lane;
+  lane.inverse_mass = 1.0 / p.mass;
+  lane.inverse_inertia = 1.0 / p.inertia;
+  lane.centre_x = p.centre_of_mass.x;
+  lane.centre_y = p.centre_of_mass.y;
+  lane.friction_static = p.friction_static;
+  lane.friction_kinetic = p.friction_kinetic;
+  lane.inverse_decay_speed = 1.0 / p.friction_decay_speed;
+  lane.damping_beta = damping_beta(model, p);
+  lane.horizontal_scale = p.horizontal_scale;
+  lane.vertical_scale = p.vertical_scale;
+  lane.stiffness_scale = p.stiffness_scale;
+  return lane;
+}
+
+BodyState<double> rest_state(const Model& model, const LaneParameters<double>& lane) {
+  const double stiffness = total_standing_normal_stiffness(model) * lane.stiffness_scale;
+  const double penetration = model.gravity / (lane.inverse_mass * stiffness);
+  BodyState<double> body{};
+  body.x = lane.centre_x;
+  body.y = lane.centre_y - penetration;
+  return body;
+}
+
+BodyState<double> tilted_state(const Model& model, const LaneParameters<double>& lane, double rotation) {
+  const kernels::SinCos<double> r = kernels::sin_cos(rotation);
+  // The pivot is the corner lowest after the rotation.
+  int pivot = 0;
+  double lowest = 1e300;
+  for (int k = 0; k < model.corner_count; ++k) {
+    const double arm_x = model.corner_x[k] - lane.centre_x;
+    const double arm_y = model.corner_y[k] - lane.centre_y;
+    const double y = r.sin * arm_x + r.cos * arm_y;
+    if (y < lowest) {
+      lowest = y;
+      pivot = k;
+    }
+  }
+  const double penetration = model.gravity / (lane.inverse_mass * model.corner_normal_stiffness[pivot] * lane.stiffness_scale);
+  const double arm_x = model.corner_x[pivot] - lane.centre_x;
+  const double arm_y = model.corner_y[pivot] - lane.centre_y;
+  BodyState<double> body{};
+  body.theta = rotation;
+  // Keep the pivot's arc centre where it is when the cask stands upright.
+  body.x = model.corner_x[pivot] - (r.cos * arm_x - r.sin * arm_y);
+  body.y = model.rounding_radius - penetration - (r.sin * arm_x + r.cos * arm_y);
+  return body;
+}
+
+Response<double> initial_response(const LaneParameters<double>& lane, const BodyState<double>& body) {
+  Response<double> response{};
+  const kernels::SinCos<double> r = kernels::sin_cos(body.theta);
+  // Same expression as the step's, so an undisturbed cask reads exactly zero sliding.
+  response.base_x0 = body.x - r.cos * lane.centre_x + r.sin * lane.centre_y;
+  response.instability_time = kNotReached;
+  return response;
+}
+
+}  // namespace caskdem

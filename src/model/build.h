@@ -1,0 +1,85 @@
+#pragma once
+// From a physical description (section, contact, friction, limits) and one realisation's
+// physical parameters to the kernel's Model and LaneParameters, and the initial states.
+//
+// Time step (the source paper's): dt = f_s * 2 sqrt(m / K), K the total normal spring
+// constant of the corners the cask stands on, f_s = 0.01 by default. The explicit scheme is
+// stable for dt <= (2 / w_max)(sqrt(1 + z^2) - z) (z the damping ratio at w_max; Belytschko
+// & Hughes 1983); w_max is bounded by the trace of M^-1 K of the three rigid-body modes on
+// their springs, and build_model refuses a safety factor that breaks the bound.
+//
+// Damping: stiffness-proportional, C = beta K, with beta = 2 h / w for a damping ratio h
+// at the circular frequency w (given, or sqrt(K / m) of the cask on its springs).
+
+#include <utility>
+#include <vector>
+
+#include "core/units.h"
+#include "kernels/lane_state.h"
+#include "kernels/model.h"
+#include "model/contact_stiffness.h"
+#include "model/section.h"
+
+namespace caskdem {
+
+struct ModelSpec {
+  Section section;
+  DistributedStiffness stiffness;
+  FrictionLaw friction_law = FrictionLaw::constant;
+  std::vector<std::pair<double, double>> friction_table;  // (slip speed m/s, coefficient), for the tabulated law
+  double safety_factor = 0.01;   // f_s
+  double time_step = 0.0;        // s; 0: from f_s and the nominal mass
+  double tip_over_angle = 0.0;   // rad; 0: pi/2 (lying on its side)
+  double lift_off_height = 0.0;  // m; 0: a quarter of the section's height
+  double pad_half_width = 0.0;   // m; 0: an unbounded pad
+  double gravity = units::standard_gravity;
+};
+
+// One realisation's physical parameters, SI.
+struct RealisationParameters {
+  double mass = 0.0;
+  double inertia = 0.0;   // about the centre of mass
+  Point centre_of_mass;   // body frame
+  double friction_static = 0.0;
+  double friction_kinetic = 0.0;
+  double friction_decay_speed = 1.0;  // v0, m/s (exponential law)
+  double damping_ratio = 0.0;         // h
+  double damping_frequency = 0.0;     // rad/s; 0: sqrt(K / m)
+  double horizontal_scale = 1.0;
+  double vertical_scale = 1.0;
+  double stiffness_scale = 1.0;
+};
+
+RealisationParameters nominal_parameters(const ModelSpec& spec);  // mass properties from the section
+
+// Throws std::invalid_argument when the specification cannot make a stable model.
+Model build_model(const ModelSpec& spec, const RealisationParameters& nominal);
+LaneParameters<double> lane_parameters(const Model& model, const RealisationParameters& parameters);
+
+// Numbers derived from a model that users and tests want to see.
+struct ModelFacts {
+  double total_normal_stiffness = 0.0;  // N/m, corners standing on the floor
+  double total_shear_stiffness = 0.0;
+  double static_penetration = 0.0;      // m g / K
+  double natural_frequency = 0.0;       // sqrt(K / m), rad/s
+  double damping_beta = 0.0;            // s
+  double stability_angle_positive = 0.0;  // rad
+  double stability_angle_negative = 0.0;
+  double highest_frequency = 0.0;       // bound on the rigid-body modes on their springs, rad/s
+  double stable_time_step = 0.0;        // s
+  double half_span = 0.0;               // half the distance between the outermost standing corners
+};
+ModelFacts model_facts(const Model& model, const ModelSpec& spec, const RealisationParameters& parameters);
+
+double damping_beta(const Model& model, const RealisationParameters& parameters);
+double total_standing_normal_stiffness(const Model& model);  // sum over corners with rest gap 0
+
+// Standing at rest, in static equilibrium on its springs (uniform penetration m g / K).
+BodyState<double> rest_state(const Model& model, const LaneParameters<double>& lane);
+// Tilted by `rotation` about the pivot corner it then rests on, at rest, the pivot carrying the weight.
+BodyState<double> tilted_state(const Model& model, const LaneParameters<double>& lane, double rotation);
+// Response at t = 0 (the base centre's initial position is the sliding datum).
+Response<double> initial_response(const LaneParameters<double>& lane, const BodyState<double>& body);
+inline constexpr double kNotReached = -1.0;  // instability time before anything happened
+
+}  // namespace caskdem
