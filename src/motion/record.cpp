@@ -1,0 +1,89 @@
+// Intensity measures and scaling of records.
+//
+// Integration (integrate_record): trapezoid rule on the uniform grid t_k = k dt,
+//   v_0 = 0,  v_k = v_{k-1} + dt (a_{k-1} + a_k) / 2,
+// then the baseline correction of record.h, v_k <- v_k - (t_k / T) v_N with T = t_N the
+// duration: the same as subtracting the constant acceleration v_N / T, so the corrected
+// velocity ends at exactly zero. The displacement is the trapezoid integral of the corrected
+// velocity, u_0 = 0; it need not end at zero (a residual offset is kept, not corrected).
+// The trapezoid rule integrates the linear correction exactly, so correcting before or after
+// integrating gives the same displacement.
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+#include "motion/record.h"
+
+namespace caskdem::motion {
+
+GroundMotion integrate_record(const Record& record) {
+  const std::vector<double>& a = record.acceleration;
+  const std::size_t n = a.size();
+  GroundMotion ground;
+  ground.velocity.assign(n, 0.0);
+  ground.displacement.assign(n, 0.0);
+  if (n < 2) return ground;  // a single sample has no duration to integrate over
+
+  const double dt = record.time_step;
+  std::vector<double>& v = ground.velocity;
+  for (std::size_t k = 1; k < n; ++k) v[k] = v[k - 1] + 0.5 * dt * (a[k - 1] + a[k]);
+  // t_k / T = k / N exactly, so the last sample becomes v_N - v_N = 0.
+  const double final_velocity = v[n - 1];
+  const double last = static_cast<double>(n - 1);
+  for (std::size_t k = 0; k < n; ++k) v[k] -= (static_cast<double>(k) / last) * final_velocity;
+
+  std::vector<double>& u = ground.displacement;
+  for (std::size_t k = 1; k < n; ++k) u[k] = u[k - 1] + 0.5 * dt * (v[k - 1] + v[k]);
+  return ground;
+}
+
+double peak_ground_acceleration(const Record& record) {
+  double peak = 0.0;
+  for (const double a : record.acceleration) peak = std::max(peak, std::abs(a));
+  return peak;
+}
+
+double peak_ground_velocity(const Record& record) {
+  double peak = 0.0;
+  for (const double v : integrate_record(record).velocity) peak = std::max(peak, std::abs(v));
+  return peak;
+}
+
+Record scaled(const Record& record, double factor) {
+  if (!std::isfinite(factor)) throw std::invalid_argument("scaled: the factor must be finite");
+  Record out = record;
+  for (double& a : out.acceleration) a *= factor;
+  return out;
+}
+
+namespace {
+// The factor that brings a measure to its target; a zero record has no such factor.
+double factor_for(double measure, double target, const char* what) {
+  if (!std::isfinite(target) || target < 0.0)
+    throw std::invalid_argument(std::string(what) + ": the target must be finite and not negative");
+  if (!(measure > 0.0))
+    throw std::invalid_argument(std::string(what) + ": the record's peak is zero (an all-zero record), so no factor reaches the target");
+  return target / measure;
+}
+}  // namespace
+
+Record scaled_to_pga(const Record& record, double target_pga) {
+  return scaled(record, factor_for(peak_ground_acceleration(record), target_pga, "scaled_to_pga"));
+}
+
+Record scaled_to_pgv(const Record& record, double target_pgv) {
+  // PGV is linear in the accelerations (integration and baseline correction are linear).
+  return scaled(record, factor_for(peak_ground_velocity(record), target_pgv, "scaled_to_pgv"));
+}
+
+Record time_scaled(const Record& record, double time_factor) {
+  if (!std::isfinite(time_factor) || time_factor <= 0.0)
+    throw std::invalid_argument("time_scaled: the time factor must be finite and positive");
+  Record out = record;
+  out.time_step *= time_factor;
+  return out;
+}
+
+}  // namespace caskdem::motion

@@ -1,0 +1,424 @@
+// Record readers: text files of accelerations into a Record in SI.
+//
+// Formats (detected from the content, not the extension, unless ReadOptions::format says):
+//   PEER .AT2   free-text header lines, then a line giving the number of points and the step,
+//               either "NPTS=  5372, DT=   .0100 SEC" (NGA-West2, also old files) or
+//               "4000    0.01000    NPTS, DT" (older files); it is the 4th line in PEER files
+//               and is looked for among the first header_search_lines lines. Then exactly
+//               NPTS accelerations in g, several per line, separated by blanks (or commas).
+//               The two PEER formats differ only in that line; both forms are accepted for
+//               either, so peer_nga_west2 and peer_old read the same way.
+//   columns     one value "a" or two "t a" per line, separated by commas, semicolons, tabs
+//               or spaces. Blank lines and "#" comment lines are skipped anywhere; lines
+//               before the first all-numeric line are a free-text header. After the data has
+//               started, a non-numeric line or one with another number of values is an error.
+//               The unit must be given (the file does not say it). A time column must be
+//               uniformly sampled; its first time is taken as t = 0 of the record.
+// Every error is an InputError "FILE:LINE: what was found; expected what".
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <limits>
+#include <regex>
+#include <sstream>
+#include <string_view>
+#include <system_error>
+
+#include "core/error.h"
+#include "core/units.h"
+#include "motion/record.h"
+
+namespace caskdem::motion {
+namespace {
+
+using std::filesystem::path;
+
+// PEER files have the NPTS line 4th; a few more lines allow a longer free-text header.
+constexpr std::size_t header_search_lines = 8;
+// Sampling uniformity demanded of a time column (relative to the step), as record.h states.
+constexpr double step_tolerance = 1e-6;
+
+std::string_view trim(std::string_view s) {
+  const auto is_space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
+  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
+  return s;
+}
+
+std::string upper(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// A line quoted in a message: trimmed and cut short so the message stays one line.
+std::string quote_line(std::string_view s) {
+  s = trim(s);
+  constexpr std::size_t longest = 60;
+  if (s.size() > longest) return "'" + std::string(s.substr(0, longest)) + "...'";
+  return "'" + std::string(s) + "'";
+}
+
+std::string number_text(double x) {
+  std::ostringstream out;
+  out.precision(10);
+  out << x;
+  return out.str();
+}
+
+// The whole token as a double: a leading "+" and Fortran "D" exponents (old records) are
+// accepted. "nan"/"inf" parse (the caller rejects them as not finite); so does a value
+// beyond the range of a double, as infinity.
+std::optional<double> parse_number(std::string_view token) {
+  token = trim(token);
+  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
+  if (token.empty() || token.size() > 64) return std::nullopt;
+  std::array<char, 64> buffer{};
+  std::transform(token.begin(), token.end(), buffer.begin(), [](char c) { return c == 'd' || c == 'D' ? 'e' : c; });
+  const char* first = buffer.data();
+  const char* last = first + token.size();
+  double value = 0.0;
+  const auto [end, error] = std::from_chars(first, last, value);
+  if (end != last) return std::nullopt;
+  if (error == std::errc::result_out_of_range) return std::numeric_limits<double>::infinity();
+  if (error != std::errc()) return std::nullopt;
+  return value;
+}
+
+// The file's lines, without line ends (LF or CRLF) and without a UTF-8 byte-order mark.
+std::vector<std::string> read_lines(const path& file) {
+  std::error_code ec;
+  const auto status = std::filesystem::status(file, ec);
+  if (!std::filesystem::exists(status)) fail_at(file, 0, "no such file; expected the path of an acceleration record");
+  if (std::filesystem::is_directory(status)) fail_at(file, 0, "is a directory; expected an acceleration record file");
+  std::ifstream in(file, std::ios::binary);
+  if (!in) fail_at(file, 0, "cannot be opened for reading; expected a readable acceleration record file");
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (in.bad()) fail_at(file, 0, "could not be read; expected a readable acceleration record file");
+
+  if (text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF"))
+    fail_at(file, 1, "the file is UTF-16 text; expected ASCII or UTF-8 text");
+  if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
+
+  std::vector<std::string> lines;
+  std::size_t start = 0;
+  while (start < text.size()) {
+    std::size_t end = text.find('\n', start);
+    if (end == std::string::npos) end = text.size();
+    std::string line = text.substr(start, end - start);
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.find('\0') != std::string::npos)
+      fail_at(file, static_cast<long>(lines.size() + 1), "binary data (a NUL byte); expected a text file");
+    lines.push_back(std::move(line));
+    start = end + 1;
+  }
+  const bool blank = std::all_of(lines.begin(), lines.end(), [](const std::string& l) { return trim(l).empty(); });
+  if (blank) fail_at(file, 0, "the file is empty; expected an acceleration record (PEER .AT2 or columns of numbers)");
+  return lines;
+}
+
+bool is_comment(std::string_view line) { return trim(line).starts_with('#'); }
+
+// Index of the AT2 "NPTS ... DT" line among the first lines (comments aside), if any.
+std::optional<std::size_t> find_npts_line(const std::vector<std::string>& lines) {
+  const std::size_t n = std::min(lines.size(), header_search_lines);
+  for (std::size_t i = 0; i < n; ++i) {
+    if (is_comment(lines[i])) continue;
+    const std::string u = upper(lines[i]);
+    if (u.find("NPTS") != std::string::npos && u.find("DT") != std::string::npos) return i;
+  }
+  return std::nullopt;
+}
+
+double to_si(double value, AccelerationUnit unit) {
+  switch (unit) {
+    case AccelerationUnit::g: return units::g_to_si(value);
+    case AccelerationUnit::gal: return units::gal_to_si(value);
+    case AccelerationUnit::si: return value;
+  }
+  return value;
+}
+
+std::string unit_name(AccelerationUnit unit) {
+  switch (unit) {
+    case AccelerationUnit::g: return "g";
+    case AccelerationUnit::gal: return "gal";
+    case AccelerationUnit::si: return "m/s^2";
+  }
+  return "?";
+}
+
+// A time step given in the options must agree with the one the file states.
+void check_given_step(const path& file, long line, double file_step, const ReadOptions& options) {
+  if (!options.time_step) return;
+  const double given = *options.time_step;
+  if (!(std::abs(given - file_step) <= step_tolerance * file_step))
+    fail_at(file, line,
+            "the file's time step is " + number_text(file_step) + " s but " + number_text(given) +
+                " s was given; expected them to agree (or no time step to be given)");
+}
+
+// ---- PEER .AT2 --------------------------------------------------------------------------
+
+struct At2Header {
+  long long npts = 0;
+  double dt = 0.0;
+};
+
+At2Header parse_npts_line(const path& file, long line_number, const std::string& line) {
+  // "NPTS= 5372, DT= .0100 SEC" or "4000 0.01000 NPTS, DT"; the values are taken as any
+  // token so that a bad one is reported as found rather than as an unmatched line.
+  static const std::regex keyed(R"(NPTS\s*=\s*([^\s,]+)\s*,?\s*DT\s*=\s*([^\s,]+))", std::regex::icase);
+  static const std::regex positional(R"(^\s*([^\s,]+)\s*,?\s*([^\s,]+)\s*,?\s*NPTS\s*,?\s*DT)", std::regex::icase);
+  std::smatch m;
+  if (!std::regex_search(line, m, keyed) && !std::regex_search(line, m, positional))
+    fail_at(file, line_number,
+            "found " + quote_line(line) + "; expected the PEER line 'NPTS= n, DT= dt SEC' or 'n dt NPTS, DT'");
+  const std::string npts_text = m[1].str();
+  const std::string dt_text = m[2].str();
+
+  At2Header header;
+  const auto [end, error] = std::from_chars(npts_text.data(), npts_text.data() + npts_text.size(), header.npts);
+  if (error != std::errc() || end != npts_text.data() + npts_text.size() || header.npts <= 0)
+    fail_at(file, line_number, "NPTS = '" + npts_text + "'; expected a positive whole number of points");
+  const auto dt = parse_number(dt_text);
+  if (!dt || !std::isfinite(*dt) || *dt <= 0.0)
+    fail_at(file, line_number, "DT = '" + dt_text + "'; expected a positive time step in seconds");
+  header.dt = *dt;
+  return header;
+}
+
+// A header saying "UNITS OF CM/S" is a velocity (.VT2) or displacement (.DT2) file.
+void check_at2_units(const path& file, const std::vector<std::string>& lines, std::size_t npts_index) {
+  for (std::size_t i = 0; i < npts_index; ++i) {
+    const std::string u = upper(lines[i]);
+    const auto at = u.find("UNITS OF");
+    if (at == std::string::npos) continue;
+    std::string_view rest = trim(std::string_view(u).substr(at + 8));
+    const auto word_end = rest.find_first_of(" \t,.;");
+    const std::string_view unit = rest.substr(0, word_end);
+    if (unit != "G")
+      fail_at(file, static_cast<long>(i + 1),
+              "the header says units of " + std::string(unit) + "; expected an acceleration record in units of G");
+  }
+}
+
+Record read_at2(const path& file, const std::vector<std::string>& lines, std::size_t npts_index,
+                const ReadOptions& options) {
+  if (options.unit && *options.unit != AccelerationUnit::g)
+    fail_at(file, 0, "a PEER .AT2 record is in g but unit " + unit_name(*options.unit) +
+                         " was given; expected unit g or none");
+  check_at2_units(file, lines, npts_index);
+  const long npts_line = static_cast<long>(npts_index + 1);
+  const At2Header header = parse_npts_line(file, npts_line, lines[npts_index]);
+  check_given_step(file, npts_line, header.dt, options);
+
+  Record record;
+  record.source = file.string();
+  record.time_step = header.dt;
+  // Reserve no more than the file could hold: NPTS may be wrong.
+  record.acceleration.reserve(static_cast<std::size_t>(std::min<long long>(header.npts, 16 * static_cast<long long>(lines.size()))));
+  const std::string expected_count = "expected exactly NPTS = " + std::to_string(header.npts) + " values";
+  for (std::size_t i = npts_index + 1; i < lines.size(); ++i) {
+    const long line_number = static_cast<long>(i + 1);
+    std::string_view rest = lines[i];
+    while (true) {
+      const auto begin = rest.find_first_not_of(" \t,");
+      if (begin == std::string_view::npos) break;
+      rest.remove_prefix(begin);
+      const auto end = std::min(rest.find_first_of(" \t,"), rest.size());
+      const std::string_view token = rest.substr(0, end);
+      rest.remove_prefix(end);
+      const auto value = parse_number(token);
+      if (!value)
+        fail_at(file, line_number, "found '" + std::string(token) + "'; expected numbers (accelerations in g)");
+      if (!std::isfinite(*value))
+        fail_at(file, line_number, "found '" + std::string(token) + "'; expected finite accelerations");
+      if (static_cast<long long>(record.acceleration.size()) == header.npts)
+        fail_at(file, line_number, "more values than NPTS (line " + std::to_string(npts_line) + "); " + expected_count);
+      record.acceleration.push_back(units::g_to_si(*value));
+    }
+  }
+  if (static_cast<long long>(record.acceleration.size()) != header.npts)
+    fail_at(file, npts_line,
+            "found " + std::to_string(record.acceleration.size()) + " values after this line; " + expected_count +
+                " (is the file cut short?)");
+  return record;
+}
+
+// ---- columns ----------------------------------------------------------------------------
+
+// The fields of a line: split at ";" if there is one, else at ",", else at blanks. A
+// trailing separator (as spreadsheets write) leaves no field.
+std::vector<std::string_view> split_fields(std::string_view line) {
+  std::vector<std::string_view> fields;
+  const char separator = line.find(';') != std::string_view::npos ? ';' : line.find(',') != std::string_view::npos ? ',' : ' ';
+  if (separator == ' ') {
+    std::size_t at = 0;
+    while ((at = line.find_first_not_of(" \t", at)) != std::string_view::npos) {
+      const auto end = std::min(line.find_first_of(" \t", at), line.size());
+      fields.push_back(line.substr(at, end - at));
+      at = end;
+    }
+    return fields;
+  }
+  std::size_t at = 0;
+  while (true) {
+    const auto end = line.find(separator, at);
+    fields.push_back(trim(line.substr(at, end == std::string_view::npos ? std::string_view::npos : end - at)));
+    if (end == std::string_view::npos) break;
+    at = end + 1;
+  }
+  while (!fields.empty() && fields.back().empty()) fields.pop_back();
+  return fields;
+}
+
+struct Sample {
+  long line;
+  double t;  // only with two columns
+  double a;
+};
+
+Record read_columns(const path& file, const std::vector<std::string>& lines, const ReadOptions& options) {
+  if (!options.unit)
+    fail_at(file, 0,
+            "a column file does not state its unit; expected the unit to be given with the record "
+            "(g, gal or m/s^2)");
+
+  std::vector<Sample> samples;
+  std::size_t columns = 0;  // set by the first data line
+  long first_data_line = 0;
+  for (std::size_t i = 0; i < lines.size(); ++i) {
+    const long line_number = static_cast<long>(i + 1);
+    const std::string_view line = trim(lines[i]);
+    if (line.empty() || line.starts_with('#')) continue;
+    const auto fields = split_fields(line);
+    std::vector<double> values;
+    std::string_view bad;
+    for (const auto field : fields) {
+      const auto value = parse_number(field);
+      if (!value) {
+        bad = field;
+        break;
+      }
+      values.push_back(*value);
+    }
+    const bool numeric = !fields.empty() && values.size() == fields.size();
+    if (columns == 0) {
+      if (!numeric) continue;  // a header line
+      if (values.size() > 2)
+        fail_at(file, line_number,
+                "found " + std::to_string(values.size()) +
+                    " values on the first data line; expected 2 columns (t, a) or 1 column (a)");
+      columns = values.size();
+      first_data_line = line_number;
+    }
+    const std::string layout = columns == 2 ? "2 numbers (t, a)" : "1 number (a)";
+    if (!numeric)
+      fail_at(file, line_number,
+              "found '" + std::string(bad) + "' in " + quote_line(line) + "; expected " + layout +
+                  " as from line " + std::to_string(first_data_line) + " on");
+    if (values.size() != columns)
+      fail_at(file, line_number,
+              "found " + std::to_string(values.size()) + " values; expected " + layout + " as on line " +
+                  std::to_string(first_data_line));
+    for (const double v : values)
+      if (!std::isfinite(v)) fail_at(file, line_number, "found " + quote_line(line) + "; expected finite numbers");
+    samples.push_back({line_number, values.front(), values.back()});
+  }
+  if (samples.empty())
+    fail_at(file, 0, "no data lines; expected lines of numbers 't, a' or 'a' after any header");
+
+  Record record;
+  record.source = file.string();
+  if (columns == 1) {
+    if (!options.time_step || !std::isfinite(*options.time_step) || *options.time_step <= 0.0)
+      fail_at(file, first_data_line,
+              "a single-column file does not give its time step; expected a positive time step to be given "
+              "with the record");
+    record.time_step = *options.time_step;
+  } else {
+    const std::size_t n = samples.size();
+    if (n < 2) {
+      if (!options.time_step || !(*options.time_step > 0.0))
+        fail_at(file, samples[0].line, "only one sample; expected at least two to give the time step");
+      record.time_step = *options.time_step;
+    } else {
+      // Locate a change of step against the first step (a missing sample shows where it is),
+      // then hold every step to the mean, the record's time step.
+      const double first = samples[1].t - samples[0].t;
+      const auto step_error = [&](std::size_t k, double reference, const std::string& what) {
+        fail_at(file, samples[k].line,
+                "the time step changes to " + number_text(samples[k].t - samples[k - 1].t) + " s (t = " +
+                    number_text(samples[k - 1].t) + " to " + number_text(samples[k].t) + ") from " + what + " " +
+                    number_text(reference) + " s; expected uniform sampling (steps within 1e-6 relative)");
+      };
+      if (!(first > 0.0))
+        fail_at(file, samples[1].line,
+                "time " + number_text(samples[1].t) + " does not follow " + number_text(samples[0].t) +
+                    "; expected increasing, uniformly spaced times");
+      for (std::size_t k = 2; k < n; ++k)
+        if (!(std::abs(samples[k].t - samples[k - 1].t - first) <= step_tolerance * first))
+          step_error(k, first, "the first step");
+      const double mean = (samples[n - 1].t - samples[0].t) / static_cast<double>(n - 1);
+      for (std::size_t k = 1; k < n; ++k)
+        if (!(std::abs(samples[k].t - samples[k - 1].t - mean) <= step_tolerance * mean))
+          step_error(k, mean, "the mean step");
+      record.time_step = mean;
+      check_given_step(file, first_data_line, mean, options);
+    }
+  }
+  record.acceleration.reserve(samples.size());
+  for (const Sample& s : samples) record.acceleration.push_back(to_si(s.a, *options.unit));
+  return record;
+}
+
+}  // namespace
+
+std::optional<AccelerationUnit> parse_acceleration_unit(const std::string& text) {
+  const std::string_view t = trim(text);
+  if (t == "g") return AccelerationUnit::g;
+  if (t == "gal" || t == "Gal" || t == "cm/s^2" || t == "cm/s2") return AccelerationUnit::gal;
+  if (t == "m/s^2" || t == "m/s2") return AccelerationUnit::si;
+  return std::nullopt;
+}
+
+std::optional<RecordFormat> parse_record_format(const std::string& text) {
+  const std::string_view t = trim(text);
+  if (t == "automatic") return RecordFormat::automatic;
+  if (t == "peer_nga_west2") return RecordFormat::peer_nga_west2;
+  if (t == "peer_old") return RecordFormat::peer_old;
+  if (t == "columns") return RecordFormat::columns;
+  return std::nullopt;
+}
+
+Record read_record(const std::filesystem::path& file, const ReadOptions& options) {
+  if (options.time_step && !(std::isfinite(*options.time_step) && *options.time_step > 0.0))
+    fail_at(file, 0, "time step " + number_text(*options.time_step) + " s given; expected a positive time step");
+  const std::vector<std::string> lines = read_lines(file);
+  const auto npts_line = find_npts_line(lines);
+  switch (options.format) {
+    case RecordFormat::automatic:
+      if (npts_line) return read_at2(file, lines, *npts_line, options);
+      return read_columns(file, lines, options);
+    case RecordFormat::peer_nga_west2:
+    case RecordFormat::peer_old:
+      if (!npts_line) {
+        const long line = lines.size() >= 4 ? 4 : static_cast<long>(lines.size());
+        fail_at(file, line,
+                "found " + quote_line(lines[static_cast<std::size_t>(line - 1)]) +
+                    "; expected the PEER header line 'NPTS= n, DT= dt SEC' (or 'n dt NPTS, DT') as the 4th line");
+      }
+      return read_at2(file, lines, *npts_line, options);
+    case RecordFormat::columns:
+      return read_columns(file, lines, options);
+  }
+  fail_at(file, 0, "unknown record format; expected automatic, peer_nga_west2, peer_old or columns");
+}
+
+}  // namespace caskdem::motion

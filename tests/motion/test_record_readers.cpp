@@ -1,0 +1,329 @@
+// Record readers against the shared records' README table (dt, npts, PGA as published by
+// the data's sources) and against malformed files, whose errors must name the file, the line
+// and what was expected.
+
+#include <unistd.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "core/units.h"
+#include "motion/record.h"
+
+namespace caskdem::motion {
+namespace {
+
+using ::testing::AllOf;
+using ::testing::HasSubstr;
+namespace fs = std::filesystem;
+
+const fs::path motions_dir = fs::path(CASKDEM_SHARED_DIR) / "motions";
+
+// ---- the shared records -----------------------------------------------------------------
+
+struct SharedRecord {
+  const char* file;
+  bool needs_unit;  // column files do not state their unit (all these are in g)
+  double dt;        // s, README
+  std::size_t npts;  // README
+  double pga_g;     // README, 3 significant digits
+};
+
+// The README's table, copied by hand.
+const SharedRecord shared_records[] = {
+    {"elcentro1940_ns_RSN6.AT2", false, 0.01, 5372, 0.281},
+    {"elcentro1940_ns_IELC180_oldpeer.AT2", false, 0.01, 4000, 0.313},
+    {"taft1952_RSN15.AT2", false, 0.01, 5435, 0.159},
+    {"kobe1995_takatori090.csv", true, 0.01, 4015, 0.616},
+    {"chichi1999_tcu068_090.csv", true, 0.005, 13102, 0.566},
+    {"northridge1994_vsp360.csv", true, 0.005, 9327, 0.934},
+    {"northridge1994_castaic090.dat", true, 0.01, 3989, 0.568},
+};
+
+void PrintTo(const SharedRecord& record, std::ostream* out) { *out << record.file; }
+
+class SharedRecords : public ::testing::TestWithParam<SharedRecord> {};
+
+TEST_P(SharedRecords, ReadWithTheirPublishedStepLengthAndPga) {
+  const SharedRecord& expected = GetParam();
+  ReadOptions options;
+  if (expected.needs_unit) options.unit = AccelerationUnit::g;
+  const Record record = read_record(motions_dir / expected.file, options);
+  EXPECT_EQ(record.acceleration.size(), expected.npts);
+  // Time columns are printed with at most 4 decimals of dt = 0.01 or 0.005: their mean step
+  // is the nominal one to rounding of the decimal times (~1e-15 s).
+  EXPECT_NEAR(record.time_step, expected.dt, 1e-12);
+  // The README's PGA has 3 significant digits: rounding alone is up to 0.0005 / 0.159 = 0.3 %.
+  const double pga_g = units::si_to_g(peak_ground_acceleration(record));
+  EXPECT_NEAR(pga_g, expected.pga_g, 0.005 * expected.pga_g);
+  for (const double a : record.acceleration) ASSERT_TRUE(std::isfinite(a));
+}
+
+INSTANTIATE_TEST_SUITE_P(Motions, SharedRecords, ::testing::ValuesIn(shared_records),
+                         [](const ::testing::TestParamInfo<SharedRecord>& info) {
+                           std::string name = fs::path(info.param.file).stem().string();
+                           for (char& c : name)
+                             if (!std::isalnum(static_cast<unsigned char>(c))) c = '_';
+                           return name;
+                         });
+
+TEST(SharedRecords, FirstAndLastValuesAreTheFilesInSi) {
+  // Values copied from the files by eye, converted with standard gravity.
+  const Record nga = read_record(motions_dir / "elcentro1940_ns_RSN6.AT2");
+  EXPECT_DOUBLE_EQ(nga.acceleration.front(), 0.9984852e-3 * 9.80665);
+  EXPECT_DOUBLE_EQ(nga.acceleration.back(), -0.1790158e-3 * 9.80665);
+
+  const Record old = read_record(motions_dir / "elcentro1940_ns_IELC180_oldpeer.AT2");
+  EXPECT_DOUBLE_EQ(old.acceleration.front(), -0.6403182e-2 * 9.80665);
+
+  ReadOptions g;
+  g.unit = AccelerationUnit::g;
+  const Record bom = read_record(motions_dir / "northridge1994_vsp360.csv", g);
+  EXPECT_DOUBLE_EQ(bom.acceleration.front(), 3.40e-4 * 9.80665);
+  EXPECT_DOUBLE_EQ(bom.acceleration.back(), -9.62e-4 * 9.80665);
+
+  const Record dat = read_record(motions_dir / "northridge1994_castaic090.dat", g);
+  EXPECT_DOUBLE_EQ(dat.acceleration.front(), -0.0012 * 9.80665);
+  EXPECT_DOUBLE_EQ(dat.acceleration.back(), -0.0001 * 9.80665);
+}
+
+TEST(SharedRecords, AnAt2GivenAUnitOtherThanGIsAnError) {
+  ReadOptions gal;
+  gal.unit = AccelerationUnit::gal;
+  const fs::path file = motions_dir / "taft1952_RSN15.AT2";
+  try {
+    read_record(file, gal);
+    FAIL() << "no error";
+  } catch (const InputError& e) {
+    EXPECT_THAT(e.what(), AllOf(HasSubstr("taft1952_RSN15.AT2"), HasSubstr("gal"), HasSubstr("expected unit g")));
+  }
+}
+
+// ---- small files written by the tests -----------------------------------------------------
+
+class MotionFiles : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() /
+           ("caskdem_motion_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  fs::path write(const std::string& name, const std::string& text) const {
+    const fs::path file = dir_ / name;
+    std::ofstream(file, std::ios::binary) << text;
+    return file;
+  }
+  // The message of the InputError that reading throws; a failure when none is thrown.
+  static std::string error_of(const fs::path& file, const ReadOptions& options) {
+    try {
+      read_record(file, options);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << "no InputError for " << file;
+    return {};
+  }
+  static ReadOptions in_g() {
+    ReadOptions options;
+    options.unit = AccelerationUnit::g;
+    return options;
+  }
+
+  fs::path dir_;
+};
+
+const std::string at2_header =
+    "PEER NGA STRONG MOTION DATABASE RECORD\n"
+    "Test, 1/1/2000, Station, 000\n"
+    "ACCELERATION TIME SERIES IN UNITS OF G\n";
+
+TEST_F(MotionFiles, MissingFile) {
+  const std::string message = error_of(dir_ / "no_such_record.AT2", {});
+  EXPECT_THAT(message, AllOf(HasSubstr("no_such_record.AT2"), HasSubstr("no such file"), HasSubstr("expected")));
+}
+
+TEST_F(MotionFiles, ADirectoryIsNotARecord) {
+  EXPECT_THAT(error_of(dir_, {}), AllOf(HasSubstr(dir_.string()), HasSubstr("directory"), HasSubstr("expected")));
+}
+
+TEST_F(MotionFiles, NonNumericValueInTheData) {
+  const auto file = write("bad_value.csv", "# comment\nt,a\n0.00,0.1\n0.01,0.2\n0.02,abc\n0.03,0.1\n");
+  EXPECT_THAT(error_of(file, in_g()), AllOf(HasSubstr("bad_value.csv:5:"), HasSubstr("'abc'"), HasSubstr("expected 2 numbers")));
+}
+
+TEST_F(MotionFiles, WrongColumnCount) {
+  const auto file = write("columns.txt", "0.00 0.1\n0.01 0.2\n0.02 0.3 0.4\n");
+  EXPECT_THAT(error_of(file, in_g()), AllOf(HasSubstr("columns.txt:3:"), HasSubstr("found 3 values"), HasSubstr("expected 2")));
+}
+
+TEST_F(MotionFiles, ThreeColumnsFromTheStart) {
+  const auto file = write("three.txt", "time a b\n0.00 0.1 0.2\n");
+  EXPECT_THAT(error_of(file, in_g()), AllOf(HasSubstr("three.txt:2:"), HasSubstr("3 values"), HasSubstr("expected 2 columns")));
+}
+
+TEST_F(MotionFiles, At2WithFewerValuesThanNpts) {
+  const auto file = write("short.AT2", at2_header + "NPTS=     6, DT=   .0100 SEC\n  .1E-01  .2E-01  .3E-01\n  .4E-01  .5E-01\n");
+  EXPECT_THAT(error_of(file, {}), AllOf(HasSubstr("short.AT2:4:"), HasSubstr("found 5 values"), HasSubstr("expected exactly NPTS = 6")));
+}
+
+TEST_F(MotionFiles, At2WithMoreValuesThanNpts) {
+  const auto file = write("long.AT2", at2_header + "NPTS=     2, DT=   .0100 SEC\n  .1E-01  .2E-01\n  .3E-01\n");
+  EXPECT_THAT(error_of(file, {}), AllOf(HasSubstr("long.AT2:6:"), HasSubstr("more values than NPTS"), HasSubstr("expected exactly NPTS = 2")));
+}
+
+TEST_F(MotionFiles, At2WithNegativeDt) {
+  const auto file = write("negative_dt.AT2", at2_header + "NPTS=     2, DT=  -.0100 SEC\n  .1E-01  .2E-01\n");
+  EXPECT_THAT(error_of(file, {}), AllOf(HasSubstr("negative_dt.AT2:4:"), HasSubstr("-.0100"), HasSubstr("expected a positive time step")));
+}
+
+TEST_F(MotionFiles, At2WithNonNumericValue) {
+  const auto file = write("word.AT2", at2_header + "NPTS=     3, DT=   .0100 SEC\n  .1E-01\n  .2E-01 x.3\n");
+  EXPECT_THAT(error_of(file, {}), AllOf(HasSubstr("word.AT2:6:"), HasSubstr("'x.3'"), HasSubstr("expected numbers")));
+}
+
+TEST_F(MotionFiles, At2OfVelocityIsRejected) {
+  const auto file = write("vel.VT2", "PEER\nTest\nVELOCITY TIME SERIES IN UNITS OF CM/S\nNPTS=     1, DT=   .0100 SEC\n .1\n");
+  EXPECT_THAT(error_of(file, {}), AllOf(HasSubstr("vel.VT2:3:"), HasSubstr("CM/S"), HasSubstr("expected an acceleration record")));
+}
+
+TEST_F(MotionFiles, OldStyleNptsLineAndContentDetection) {
+  // An AT2 under another extension is recognised by its NPTS line; values may be D-exponent.
+  const auto file = write("old_style.txt", "PEER\nTest\nACCELERATION IN G\n   3    0.02000    NPTS, DT\n .1D+00 -.2E+00\n .3\n");
+  const Record record = read_record(file);
+  ASSERT_EQ(record.acceleration.size(), 3u);
+  EXPECT_DOUBLE_EQ(record.time_step, 0.02);
+  EXPECT_DOUBLE_EQ(record.acceleration[0], units::g_to_si(0.1));
+  EXPECT_DOUBLE_EQ(record.acceleration[1], units::g_to_si(-0.2));
+  EXPECT_DOUBLE_EQ(record.acceleration[2], units::g_to_si(0.3));
+}
+
+TEST_F(MotionFiles, ColumnsUnderAnAt2NameNeedAUnit) {
+  const auto file = write("columns.AT2", "0 1\n0.5 2\n");
+  EXPECT_THAT(error_of(file, {}), AllOf(HasSubstr("columns.AT2"), HasSubstr("unit"), HasSubstr("expected the unit to be given")));
+}
+
+TEST_F(MotionFiles, ExplicitPeerFormatOnAColumnFile) {
+  const auto file = write("not_peer.csv", "a\nb\nc\n0,1\n");
+  ReadOptions options;
+  options.format = RecordFormat::peer_old;
+  EXPECT_THAT(error_of(file, options), AllOf(HasSubstr("not_peer.csv:4:"), HasSubstr("'0,1'"), HasSubstr("expected the PEER header line")));
+}
+
+TEST_F(MotionFiles, IrregularTimeColumn) {
+  const auto file = write("irregular.csv", "t,a\n0.00,0.1\n0.01,0.2\n0.02,0.3\n0.04,0.4\n0.05,0.5\n");
+  EXPECT_THAT(error_of(file, in_g()), AllOf(HasSubstr("irregular.csv:5:"), HasSubstr("0.02 s"), HasSubstr("expected uniform sampling")));
+}
+
+TEST_F(MotionFiles, MissingSampleIsFoundWhereItIs) {
+  // One missing sample in 1000 moves the mean step by 0.1 %: the error must point at the gap,
+  // not at the first line that differs from the mean.
+  std::string text;
+  for (int k = 0; k <= 1000; ++k)
+    if (k != 700) text += std::to_string(k * 0.01) + "\t0.5\n";
+  const auto file = write("gap.txt", text);
+  EXPECT_THAT(error_of(file, in_g()), AllOf(HasSubstr("gap.txt:701:"), HasSubstr("expected uniform sampling")));
+}
+
+TEST_F(MotionFiles, DecreasingTime) {
+  const auto file = write("backwards.csv", "0.02,1\n0.01,1\n0.00,1\n");
+  EXPECT_THAT(error_of(file, in_g()), AllOf(HasSubstr("backwards.csv:2:"), HasSubstr("expected increasing")));
+}
+
+TEST_F(MotionFiles, NanValue) {
+  const auto file = write("nan.csv", "t,a\n0.00,0.1\n0.01,nan\n0.02,0.3\n");
+  EXPECT_THAT(error_of(file, in_g()), AllOf(HasSubstr("nan.csv:3:"), HasSubstr("nan"), HasSubstr("expected finite")));
+}
+
+TEST_F(MotionFiles, NanValueInAt2) {
+  const auto file = write("nan.AT2", at2_header + "NPTS=     2, DT=   .0100 SEC\n  .1E-01  NaN\n");
+  EXPECT_THAT(error_of(file, {}), AllOf(HasSubstr("nan.AT2:5:"), HasSubstr("NaN"), HasSubstr("expected finite")));
+}
+
+TEST_F(MotionFiles, EmptyFile) {
+  const auto empty = write("empty.csv", "");
+  EXPECT_THAT(error_of(empty, in_g()), AllOf(HasSubstr("empty.csv"), HasSubstr("empty"), HasSubstr("expected")));
+  const auto blank = write("blank.txt", "\n  \r\n\t\n");
+  EXPECT_THAT(error_of(blank, in_g()), AllOf(HasSubstr("blank.txt"), HasSubstr("empty"), HasSubstr("expected")));
+}
+
+TEST_F(MotionFiles, HeaderOnly) {
+  const auto file = write("header_only.csv", "# a comment\nt,a\n");
+  EXPECT_THAT(error_of(file, in_g()), AllOf(HasSubstr("header_only.csv"), HasSubstr("no data"), HasSubstr("expected")));
+}
+
+TEST_F(MotionFiles, ColumnFileWithoutUnit) {
+  const auto file = write("no_unit.csv", "t,a\n0,1\n0.01,2\n");
+  EXPECT_THAT(error_of(file, {}), AllOf(HasSubstr("no_unit.csv"), HasSubstr("unit"), HasSubstr("g, gal or m/s^2"), HasSubstr("expected")));
+}
+
+TEST_F(MotionFiles, SingleColumnNeedsATimeStep) {
+  const auto file = write("one_column.txt", "Accelerations in gal\n10\n-20\n30\n");
+  ReadOptions options;
+  options.unit = AccelerationUnit::gal;
+  EXPECT_THAT(error_of(file, options), AllOf(HasSubstr("one_column.txt:2:"), HasSubstr("time step"), HasSubstr("expected")));
+  options.time_step = 0.02;
+  const Record record = read_record(file, options);
+  ASSERT_EQ(record.acceleration.size(), 3u);
+  EXPECT_DOUBLE_EQ(record.time_step, 0.02);
+  EXPECT_DOUBLE_EQ(record.acceleration[1], -0.20);  // 20 gal = 0.2 m/s^2
+}
+
+TEST_F(MotionFiles, GivenTimeStepMustAgreeWithTheTimeColumn) {
+  const auto file = write("step.csv", "0,1\n0.01,2\n0.02,3\n");
+  ReadOptions options = in_g();
+  options.time_step = 0.02;
+  EXPECT_THAT(error_of(file, options), AllOf(HasSubstr("step.csv:1:"), HasSubstr("expected them to agree")));
+}
+
+TEST_F(MotionFiles, SeparatorsBomCrlfAndSiUnits) {
+  ReadOptions si;
+  si.unit = AccelerationUnit::si;
+  for (const std::string& text : {std::string("\xEF\xBB\xBFtime;acc\r\n0;1.5\r\n0,5;2.5\r\n"),  // decimal comma: not numeric
+                                  std::string("t\ta\n0\t1.5\n0.5\t2.5\n1.0\t-3\n"),
+                                  std::string("\xEF\xBB\xBF# x\r\nt;a\r\n0;1.5\r\n0.5;2.5\r\n1.0;-3\r\n"),
+                                  std::string("Free text: 1.5 Hz\n t , a \n0 , 1.5,\n0.5, 2.5,\n1.0 , -3,\n"),
+                                  std::string("0   1.5\n\n0.5  +2.5\n# note\n1.0  -3e0\n")}) {
+    const auto file = write("sep.txt", text);
+    if (text.find("0,5") != std::string::npos) {
+      EXPECT_THAT(error_of(file, si), AllOf(HasSubstr("sep.txt:3:"), HasSubstr("'0,5'"), HasSubstr("expected 2 numbers")));
+      continue;
+    }
+    const Record record = read_record(file, si);
+    ASSERT_EQ(record.acceleration.size(), 3u) << text;
+    EXPECT_DOUBLE_EQ(record.time_step, 0.5) << text;
+    EXPECT_DOUBLE_EQ(record.acceleration[0], 1.5) << text;
+    EXPECT_DOUBLE_EQ(record.acceleration[2], -3.0) << text;
+  }
+}
+
+TEST(ParseOptions, UnitsFormats) {
+  EXPECT_EQ(parse_acceleration_unit("g"), AccelerationUnit::g);
+  EXPECT_EQ(parse_acceleration_unit("gal"), AccelerationUnit::gal);
+  EXPECT_EQ(parse_acceleration_unit("Gal"), AccelerationUnit::gal);
+  EXPECT_EQ(parse_acceleration_unit("cm/s^2"), AccelerationUnit::gal);
+  EXPECT_EQ(parse_acceleration_unit("m/s^2"), AccelerationUnit::si);
+  EXPECT_EQ(parse_acceleration_unit("m/s2"), AccelerationUnit::si);
+  EXPECT_EQ(parse_acceleration_unit("G"), std::nullopt);
+  EXPECT_EQ(parse_acceleration_unit("ft/s^2"), std::nullopt);
+  EXPECT_EQ(parse_acceleration_unit(""), std::nullopt);
+
+  EXPECT_EQ(parse_record_format("automatic"), RecordFormat::automatic);
+  EXPECT_EQ(parse_record_format("peer_nga_west2"), RecordFormat::peer_nga_west2);
+  EXPECT_EQ(parse_record_format("peer_old"), RecordFormat::peer_old);
+  EXPECT_EQ(parse_record_format("columns"), RecordFormat::columns);
+  EXPECT_EQ(parse_record_format("at2"), std::nullopt);
+}
+
+}  // namespace
+}  // namespace caskdem::motion
