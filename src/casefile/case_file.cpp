@@ -1,0 +1,321 @@
+#include "casefile/case_file.h"
+
+#include <cctype>
+#include <cmath>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace caskdem {
+
+namespace {
+
+// A two-column table file (slip speed in m/s, friction coefficient): "#" comments and a
+// header row allowed; comma, semicolon, tab or space separated.
+std::vector<std::pair<double, double>> read_friction_table_file(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw InputError(located(file, 0, "cannot open the friction table"));
+  std::vector<std::pair<double, double>> rows;
+  std::string line;
+  long number = 0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (number == 1 && line.rfind("\xEF\xBB\xBF", 0) == 0) line.erase(0, 3);
+    for (char& ch : line) {
+      if (ch == ',' || ch == ';' || ch == '\t' || ch == '\r') ch = ' ';
+    }
+    const auto first = line.find_first_not_of(' ');
+    if (first == std::string::npos || line[first] == '#') continue;
+    std::istringstream fields(line);
+    double speed = 0.0, coefficient = 0.0;
+    std::string extra;
+    const bool parsed = static_cast<bool>(fields >> speed >> coefficient) && !(fields >> extra);
+    if (!parsed) {
+      if (rows.empty() && std::isalpha(static_cast<unsigned char>(line[first]))) continue;  // header row
+      throw InputError(located(file, number, "expected two numbers: slip speed (m/s) and friction coefficient"));
+    }
+    if (!std::isfinite(speed) || !std::isfinite(coefficient)) throw InputError(located(file, number, "expected finite numbers"));
+    rows.emplace_back(speed, coefficient);
+  }
+  return rows;
+}
+
+double read_coefficient(TableReader& t, std::string_view key) {
+  return t.in_range(key, t.quantity(key, Dimension::dimensionless), 0.0, 10.0);
+}
+
+// Keys that belong to other friction laws are an error, not silently ignored.
+void reject_keys(TableReader& t, const std::string& law, std::initializer_list<std::string_view> keys) {
+  for (std::string_view key : keys) {
+    if (t.has(key)) t.fail(key, "does not apply to friction law \"" + law + "\"");
+  }
+}
+
+}  // namespace
+
+void read_cask(TableReader& root, Case& c) {
+  TableReader t = root.table("cask");
+  c.cask.shape = t.choice("shape", {"cylinder", "polygon"});
+  const double rounding = t.non_negative("rounding", t.quantity_or("rounding", Dimension::length, 0.005));
+  const std::optional<double> mass = t.optional_quantity("mass", Dimension::mass);
+  const std::optional<double> density = t.optional_quantity("density", Dimension::density);
+  if (mass && density) t.fail("density", "give either mass or density, not both");
+  if (!mass && !density) throw InputError(located(t.file(), root.line_of("cask"), "[cask] needs mass or density"));
+  if (mass) t.positive("mass", *mass);
+  if (density) t.positive("density", *density);
+  const std::optional<double> inertia = t.optional_quantity("inertia", Dimension::moment_of_inertia);
+  if (inertia) t.positive("inertia", *inertia);
+  try {
+    if (c.cask.shape == "cylinder") {
+      Cylinder& cylinder = c.cask.cylinder;
+      cylinder.diameter = t.positive("diameter", t.quantity("diameter", Dimension::length));
+      cylinder.height = t.positive("height", t.quantity("height", Dimension::length));
+      cylinder.mass = mass ? *mass : *density * std::numbers::pi / 4.0 * cylinder.diameter * cylinder.diameter * cylinder.height;
+      cylinder.inertia = inertia;
+      cylinder.rule = t.choice("half_width", {"gyration", "radius"}, "gyration") == "radius" ? HalfWidthRule::radius
+                                                                                          : HalfWidthRule::gyration;
+      cylinder.eccentricity = t.quantity_or("eccentricity", Dimension::length, 0.0);
+      c.model.section = cylinder_section(cylinder, rounding);
+    } else {
+      std::vector<Point> vertices;
+      for (auto [x, y] : t.pairs("vertices")) vertices.push_back({x, y});
+      const double depth = t.positive("depth", t.quantity("depth", Dimension::length));
+      std::optional<Point> centre;
+      if (auto p = t.optional_pair("centre_of_mass")) centre = Point{p->first, p->second};
+      const double section_mass = mass ? *mass : *density * std::abs(polygon_area(vertices)) * depth;
+      c.model.section = polygon_section(vertices, depth, section_mass, inertia, centre, rounding);
+    }
+  } catch (const std::invalid_argument& e) {
+    throw InputError(located(t.file(), root.line_of("cask"), "[cask]: " + std::string(e.what())));
+  }
+  t.reject_unknown_keys();
+}
+
+void read_contact(TableReader& root, Case& c) {
+  TableReader t = root.table("contact");
+  const bool direct = t.has("normal_stiffness") || t.has("shear_stiffness");
+  if (t.has_table("barkan")) {
+    if (direct) t.fail("barkan", "give either normal_stiffness and shear_stiffness, or [contact.barkan], not both");
+    TableReader b = t.table("barkan");
+    BarkanFloor floor;
+    floor.shear_modulus = b.positive("shear_modulus", b.quantity("shear_modulus", Dimension::stress));
+    floor.poisson_ratio = b.in_range("poisson_ratio", b.quantity("poisson_ratio", Dimension::dimensionless), 0.0, 0.499);
+    floor.beta_z = b.positive("beta_z", b.quantity_or("beta_z", Dimension::dimensionless, 2.1));
+    floor.beta_x = b.positive("beta_x", b.quantity_or("beta_x", Dimension::dimensionless, 1.0));
+    b.reject_unknown_keys();
+    c.model.stiffness = barkan_stiffness(floor, c.model.section.base_area);
+  } else {
+    c.model.stiffness.normal = t.positive("normal_stiffness", t.quantity("normal_stiffness", Dimension::distributed_stiffness));
+    c.model.stiffness.shear = t.positive("shear_stiffness", t.quantity("shear_stiffness", Dimension::distributed_stiffness));
+  }
+  t.reject_unknown_keys();
+}
+
+void read_friction(TableReader& root, Case& c) {
+  TableReader t = root.table("friction");
+  const std::string law = t.choice("law", {"constant", "static_kinetic", "exponential", "table"});
+  RealisationParameters& p = c.parameters;
+  if (law == "constant") {
+    reject_keys(t, law, {"static", "kinetic", "decay_speed", "table", "table_file"});
+    c.model.friction_law = FrictionLaw::constant;
+    p.friction_static = p.friction_kinetic = read_coefficient(t, "coefficient");
+  } else if (law == "static_kinetic" || law == "exponential") {
+    reject_keys(t, law, {"coefficient", "table", "table_file"});
+    p.friction_static = read_coefficient(t, "static");
+    p.friction_kinetic = read_coefficient(t, "kinetic");
+    if (law == "exponential") {
+      c.model.friction_law = FrictionLaw::exponential;
+      p.friction_decay_speed = t.positive("decay_speed", t.quantity("decay_speed", Dimension::velocity));
+    } else {
+      reject_keys(t, law, {"decay_speed"});
+      c.model.friction_law = FrictionLaw::static_kinetic;
+    }
+  } else {
+    reject_keys(t, law, {"coefficient", "static", "kinetic", "decay_speed"});
+    c.model.friction_law = FrictionLaw::tabulated;
+    if (t.has("table") == t.has("table_file")) {
+      throw InputError(located(t.file(), root.line_of("friction"), "[friction] law \"table\" needs exactly one of table or table_file"));
+    }
+    if (t.has("table")) {
+      c.model.friction_table = t.pairs("table");
+    } else {
+      c.model.friction_table = read_friction_table_file(resolve_beside(t.file(), t.string("table_file")));
+    }
+    const auto& rows = c.model.friction_table;
+    const std::string key = t.has("table") ? "table" : "table_file";
+    if (rows.size() < 2 || rows.size() > static_cast<std::size_t>(kMaxFrictionTable)) {
+      t.fail(key, "expected 2 to " + std::to_string(kMaxFrictionTable) + " rows of (slip speed, coefficient)");
+    }
+    for (std::size_t i = 0; i < rows.size(); ++i) {
+      if (rows[i].second < 0.0) t.fail(key, "friction coefficients must be non-negative");
+      if (i == 0 && rows[i].first != 0.0) t.fail(key, "the first row must be at slip speed 0");
+      if (i > 0 && !(rows[i].first > rows[i - 1].first)) t.fail(key, "slip speeds must increase from row to row");
+    }
+    p.friction_static = p.friction_kinetic = rows.front().second;
+  }
+  t.reject_unknown_keys();
+}
+
+void read_damping(TableReader& root, Case& c) {
+  TableReader t = root.table("damping");
+  c.parameters.damping_ratio = t.in_range("ratio", t.quantity("ratio", Dimension::dimensionless), 0.0, 10.0);
+  if (auto f = t.optional_quantity("frequency", Dimension::frequency)) {
+    c.parameters.damping_frequency = 2.0 * std::numbers::pi * t.positive("frequency", *f);
+  }
+  t.reject_unknown_keys();
+}
+
+void read_integration(TableReader& root, Case& c) {
+  if (!root.has_table("integration")) return;
+  TableReader t = root.table("integration");
+  c.model.safety_factor = t.in_range("safety_factor", t.quantity_or("safety_factor", Dimension::dimensionless, 0.01), 1e-6, 1.0);
+  c.duration = t.non_negative("duration", t.quantity_or("duration", Dimension::time, 0.0));
+  c.settle_time = t.non_negative("settle_time", t.quantity_or("settle_time", Dimension::time, 2.0));
+  t.reject_unknown_keys();
+}
+
+void read_limits(TableReader& root, Case& c) {
+  if (!root.has_table("limits")) return;
+  TableReader t = root.table("limits");
+  if (auto a = t.optional_quantity("tip_over_angle", Dimension::angle)) {
+    c.model.tip_over_angle = t.in_range("tip_over_angle", *a, 1e-6, std::numbers::pi / 2.0);
+  }
+  if (auto h = t.optional_quantity("lift_off_height", Dimension::length)) c.model.lift_off_height = t.positive("lift_off_height", *h);
+  if (auto w = t.optional_quantity("pad_half_width", Dimension::length)) c.model.pad_half_width = t.positive("pad_half_width", *w);
+  t.reject_unknown_keys();
+}
+
+MotionSpec read_motion(TableReader& t) {
+  MotionSpec m;
+  m.where = t.file().string() + ":" + std::to_string(t.line_of("kind"));
+  const std::string kind = t.choice("kind", {"sine", "pulse", "record", "none"});
+  if (kind == "none") {
+    m.kind = MotionSpec::Kind::none;
+  } else if (kind == "sine") {
+    m.kind = MotionSpec::Kind::sine;
+    m.amplitude = t.positive("amplitude", t.quantity("amplitude", Dimension::length));
+    m.frequency = t.positive("frequency", t.quantity("frequency", Dimension::frequency));
+    m.cycles = t.positive("cycles", t.quantity("cycles", Dimension::dimensionless));
+    m.ramp_cycles = t.non_negative("ramp_cycles", t.quantity_or("ramp_cycles", Dimension::dimensionless, 2.0));
+    if (2.0 * m.ramp_cycles > m.cycles) t.fail("ramp_cycles", "the ramps up and down must fit in the cycles");
+  } else if (kind == "pulse") {
+    m.kind = MotionSpec::Kind::pulse;
+    const std::string shape = t.choice("shape", {"half_sine", "one_sine", "rectangular"});
+    m.shape = *motion::parse_pulse_shape(shape);
+    m.pulse_amplitude = t.quantity("amplitude", Dimension::acceleration);
+    if (m.pulse_amplitude == 0.0) t.fail("amplitude", "expected a non-zero acceleration");
+    m.pulse_duration = t.positive("duration", t.quantity("duration", Dimension::time));
+  } else {
+    m.kind = MotionSpec::Kind::record;
+    m.file = resolve_beside(t.file(), t.string("file"));
+    const std::string format = t.choice("format", {"automatic", "peer_nga_west2", "peer_old", "columns"}, "automatic");
+    m.read.format = *motion::parse_record_format(format);
+    if (auto unit = t.optional_string("unit")) {
+      auto parsed = motion::parse_acceleration_unit(*unit);
+      if (!parsed) t.fail("unit", "expected \"g\", \"gal\" or \"m/s^2\", got \"" + *unit + "\"");
+      m.read.unit = parsed;
+    }
+    if (auto dt = t.optional_quantity("time_step", Dimension::time)) m.read.time_step = t.positive("time_step", *dt);
+    const int scalings = int(t.has("scale")) + int(t.has("target_pga")) + int(t.has("target_pgv"));
+    if (scalings > 1) t.fail("scale", "give at most one of scale, target_pga and target_pgv");
+    if (t.has("target_pga")) {
+      m.scaling = MotionSpec::Scaling::target_pga;
+      m.scale = t.positive("target_pga", t.quantity("target_pga", Dimension::acceleration));
+    } else if (t.has("target_pgv")) {
+      m.scaling = MotionSpec::Scaling::target_pgv;
+      m.scale = t.positive("target_pgv", t.quantity("target_pgv", Dimension::velocity));
+    } else {
+      m.scaling = MotionSpec::Scaling::factor;
+      m.scale = t.quantity_or("scale", Dimension::dimensionless, 1.0);
+    }
+  }
+  m.similarity_scale = t.positive("similarity_scale", t.quantity_or("similarity_scale", Dimension::dimensionless, 1.0));
+  return m;
+}
+
+std::unique_ptr<motion::TableMotion> make_motion(const MotionSpec& spec) {
+  const double time_factor = 1.0 / std::sqrt(spec.similarity_scale);
+  switch (spec.kind) {
+    case MotionSpec::Kind::none:
+      return motion::make_still();
+    case MotionSpec::Kind::sine:
+      // Similarity: lengths 1/N, time 1/sqrt(N) (frequency sqrt(N)), acceleration unchanged.
+      return motion::make_sine(spec.amplitude / spec.similarity_scale, spec.frequency / time_factor, spec.cycles,
+                               spec.ramp_cycles);
+    case MotionSpec::Kind::pulse:
+      return motion::make_pulse(spec.shape, spec.pulse_amplitude, spec.pulse_duration * time_factor);
+    case MotionSpec::Kind::record: {
+      motion::Record record = motion::read_record(spec.file, spec.read);
+      try {
+        if (spec.scaling == MotionSpec::Scaling::target_pga) record = motion::scaled_to_pga(record, spec.scale);
+        else if (spec.scaling == MotionSpec::Scaling::target_pgv) record = motion::scaled_to_pgv(record, spec.scale);
+        else record = motion::scaled(record, spec.scale);
+      } catch (const std::invalid_argument& e) {
+        throw InputError(located(spec.file, 0, e.what()));
+      }
+      // PGV targets refer to the prototype motion; the time compression follows.
+      if (spec.similarity_scale != 1.0) record = motion::time_scaled(record, time_factor);
+      return motion::make_record_motion(std::move(record));
+    }
+  }
+  return motion::make_still();
+}
+
+Case load_case(const std::filesystem::path& file) {
+  const toml::table document = parse_toml_file(file);
+  TableReader root(document, file, "");
+  Case c;
+  c.file = file;
+  c.name = file.stem().string();
+  c.title = root.optional_string("title").value_or(c.name);
+  read_cask(root, c);
+  const RealisationParameters mass_properties = nominal_parameters(c.model);
+  c.parameters.mass = mass_properties.mass;
+  c.parameters.inertia = mass_properties.inertia;
+  c.parameters.centre_of_mass = mass_properties.centre_of_mass;
+  read_contact(root, c);
+  read_friction(root, c);
+  read_damping(root, c);
+  read_integration(root, c);
+  read_limits(root, c);
+  if (root.has_table("motion")) {
+    TableReader t = root.table("motion");
+    c.horizontal = read_motion(t);
+    if (t.has_table("vertical")) {
+      TableReader v = t.table("vertical");
+      c.vertical = read_motion(v);
+      v.reject_unknown_keys();
+    }
+    t.reject_unknown_keys();
+  } else {
+    (void)root.optional_string("motion");
+  }
+  if (root.has_table("free_vibration")) {
+    TableReader t = root.table("free_vibration");
+    FreeVibrationSpec& f = c.free_vibration;
+    f.initial_tilt_ratio = t.in_range("initial_tilt_ratio", t.quantity_or("initial_tilt_ratio", Dimension::dimensionless, 0.5), 0.01, 0.99);
+    f.duration = t.non_negative("duration", t.quantity_or("duration", Dimension::time, 0.0));
+    f.ratios = static_cast<int>(t.optional_integer("ratios").value_or(3));
+    if (f.ratios < 1 || f.ratios > kPeakCount - 1) t.fail("ratios", "expected 1 to " + std::to_string(kPeakCount - 1));
+    if (auto target = t.optional_quantity("target_restitution", Dimension::dimensionless)) {
+      f.target_restitution = t.in_range("target_restitution", *target, 0.01, 0.9999);
+    }
+    t.reject_unknown_keys();
+  }
+  c.output.directory = std::filesystem::path("results") / c.name;
+  if (root.has_table("output")) {
+    TableReader t = root.table("output");
+    if (auto d = t.optional_string("directory")) c.output.directory = *d;
+    c.output.interval = t.positive("interval", t.quantity_or("interval", Dimension::time, 1e-3));
+    c.output.csv = t.boolean_or("csv", true);
+    c.output.hdf5 = t.boolean_or("hdf5", true);
+    c.output.plot = t.boolean_or("plot", true);
+    t.reject_unknown_keys();
+  }
+  root.reject_unknown_keys();
+  return c;
+}
+
+}  // namespace caskdem

@@ -1,0 +1,89 @@
+#pragma once
+// Case files: one TOML file per analysis (cask, contact, friction, damping, integration,
+// limits, motion, output). The README's "Case file reference" lists every key; an unknown
+// key, a wrong unit or an out-of-range value is an InputError naming the file, line and key.
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "casefile/toml_reader.h"
+#include "model/build.h"
+#include "motion/record.h"
+#include "motion/table_motion.h"
+
+namespace caskdem {
+
+struct MotionSpec {
+  enum class Kind { none, sine, pulse, record };
+  enum class Scaling { factor, target_pga, target_pgv };
+  Kind kind = Kind::none;
+  // sine
+  double amplitude = 0.0;    // m (displacement)
+  double frequency = 0.0;    // Hz
+  double cycles = 0.0;
+  double ramp_cycles = 0.0;
+  // pulse
+  motion::PulseShape shape = motion::PulseShape::half_sine;
+  double pulse_amplitude = 0.0;  // m/s^2
+  double pulse_duration = 0.0;   // s
+  // record
+  std::filesystem::path file;
+  motion::ReadOptions read;
+  Scaling scaling = Scaling::factor;
+  double scale = 1.0;            // factor, or target PGA (m/s^2) / PGV (m/s)
+  double similarity_scale = 1.0; // N: a prototype motion applied to a 1/N model (time / sqrt(N))
+  std::string where;             // "case.toml:12 [motion]" for error messages
+};
+
+// Builds the motion; a record that cannot be read is an InputError naming its file and line.
+std::unique_ptr<motion::TableMotion> make_motion(const MotionSpec& spec);
+
+struct OutputSpec {
+  std::filesystem::path directory;  // default: results/<case name>
+  double interval = 1e-3;           // s between history samples
+  bool csv = true;
+  bool hdf5 = true;
+  bool plot = true;
+};
+
+struct FreeVibrationSpec {
+  double initial_tilt_ratio = 0.5;  // theta0 / alpha of the release
+  double duration = 0.0;            // s; 0: long enough for the half-cycles needed
+  int ratios = 3;                   // successive peak ratios averaged into the restitution
+  std::optional<double> target_restitution;
+};
+
+struct CaskDescription {  // what the user gave, for reports
+  std::string shape;      // "cylinder" or "polygon"
+  Cylinder cylinder;      // when a cylinder
+};
+
+struct Case {
+  std::filesystem::path file;
+  std::string name;   // file stem
+  std::string title;
+  CaskDescription cask;
+  ModelSpec model;
+  RealisationParameters parameters;
+  MotionSpec horizontal;
+  std::optional<MotionSpec> vertical;
+  double duration = 0.0;     // s; 0: motion duration + settle_time
+  double settle_time = 2.0;  // s after the motion ends
+  OutputSpec output;
+  FreeVibrationSpec free_vibration;
+};
+
+Case load_case(const std::filesystem::path& file);
+
+// The sections an ensemble file shares with a case file.
+void read_cask(TableReader& root, Case& c);
+void read_contact(TableReader& root, Case& c);
+void read_friction(TableReader& root, Case& c);
+void read_damping(TableReader& root, Case& c);
+void read_integration(TableReader& root, Case& c);
+void read_limits(TableReader& root, Case& c);
+MotionSpec read_motion(TableReader& table);
+
+}  // namespace caskdem

@@ -1,0 +1,14 @@
+#pragma once
+// The subcommands of `caskdem`, one file each; main.cpp registers them.
+
+#include <CLI/CLI.hpp>
+
+namespace caskdem::commands {
+
+void add_run(CLI::App& app);
+void add_calibrate(CLI::App& app);
+void add_sweep(CLI::App& app);
+void add_motion(CLI::App& app);
+void add_similarity(CLI::App& app);
+
+}  // namespace caskdem::commands

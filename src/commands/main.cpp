@@ -1,0 +1,33 @@
+// caskdem: does a free-standing cask rock, slide or tip over in an earthquake?
+// The command line: one executable, one subcommand per task.
+
+#include <iostream>
+
+#include <CLI/CLI.hpp>
+
+#include "caskdem/build_info.h"
+#include "commands/commands.h"
+#include "core/error.h"
+
+int main(int argc, char** argv) {
+  CLI::App app{"caskdem: rocking, sliding and tip-over of free-standing casks in earthquakes (2D DEM)"};
+  app.set_version_flag("--version", std::string(caskdem::build_info::version));
+  app.require_subcommand(1);
+  caskdem::commands::add_run(app);
+  caskdem::commands::add_calibrate(app);
+  caskdem::commands::add_sweep(app);
+  caskdem::commands::add_motion(app);
+  caskdem::commands::add_similarity(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    return app.exit(e);
+  } catch (const caskdem::InputError& e) {
+    std::cerr << "caskdem: error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << "caskdem: error: " << e.what() << "\n";
+    return 1;
+  }
+  return 0;
+}

@@ -1,0 +1,78 @@
+#pragma once
+// A thin RAII layer over the HDF5 C library: files, groups, datasets of doubles and
+// integers, and attributes. Every failure throws std::runtime_error naming the file and
+// the object. Readers need nothing but h5py: datasets are plain arrays with a "units"
+// attribute where they have a unit.
+
+#include <cstdint>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include <hdf5.h>
+
+namespace caskdem::hdf5 {
+
+// Owns one HDF5 identifier and closes it with the right function.
+class Handle {
+ public:
+  Handle() = default;
+  Handle(hid_t id, herr_t (*close)(hid_t)) : id_(id), close_(close) {}
+  Handle(Handle&& other) noexcept : id_(other.id_), close_(other.close_) { other.id_ = -1; }
+  Handle& operator=(Handle&& other) noexcept;
+  Handle(const Handle&) = delete;
+  Handle& operator=(const Handle&) = delete;
+  ~Handle();
+  hid_t get() const { return id_; }
+  bool valid() const { return id_ >= 0; }
+
+ private:
+  hid_t id_ = -1;
+  herr_t (*close_)(hid_t) = nullptr;
+};
+
+class Group {
+ public:
+  Group(Handle handle, std::string path, std::filesystem::path file)
+      : handle_(std::move(handle)), path_(std::move(path)), file_(std::move(file)) {}
+
+  Group group(const std::string& name);         // creates
+  Group open_group(const std::string& name) const;
+  bool has(const std::string& name) const;
+
+  void write(const std::string& name, const std::vector<double>& values, const std::string& units = "");
+  void write(const std::string& name, const std::vector<std::int64_t>& values);
+  void write(const std::string& name, const std::vector<std::uint8_t>& values);
+  // Row-major matrix rows x columns.
+  void write_matrix(const std::string& name, const std::vector<double>& values, std::size_t rows, std::size_t columns,
+                    const std::string& units = "");
+  void write_strings(const std::string& name, const std::vector<std::string>& values);
+
+  std::vector<double> read_doubles(const std::string& name) const;
+  std::vector<std::int64_t> read_integers(const std::string& name) const;
+  std::vector<std::uint8_t> read_bytes(const std::string& name) const;
+  std::vector<std::string> read_strings(const std::string& name) const;
+
+  void attribute(const std::string& name, double value);
+  void attribute(const std::string& name, std::int64_t value);
+  void attribute(const std::string& name, const std::string& value);
+  double double_attribute(const std::string& name) const;
+  std::int64_t integer_attribute(const std::string& name) const;
+  std::string string_attribute(const std::string& name) const;
+  bool has_attribute(const std::string& name) const;
+
+  hid_t id() const { return handle_.get(); }
+  const std::string& path() const { return path_; }
+
+ private:
+  [[noreturn]] void fail(const std::string& what) const;
+  Handle handle_;
+  std::string path_;
+  std::filesystem::path file_;
+};
+
+// Creates (truncating) or opens a file; the root group is "/".
+Group create_file(const std::filesystem::path& file);
+Group open_file(const std::filesystem::path& file);  // read-only
+
+}  // namespace caskdem::hdf5

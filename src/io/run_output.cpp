@@ -1,0 +1,181 @@
+#include "io/run_output.h"
+
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "caskdem/build_info.h"
+#include "core/units.h"
+#include "io/hdf5_file.h"
+
+namespace caskdem {
+
+namespace {
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+nlohmann::json summary_json(const RunReport& report) {
+  const RunSummary& s = report.result.summary;
+  nlohmann::json j;
+  j["max_abs_rotation_rad"] = s.max_abs_rotation;
+  j["stability_angle_rad"] = s.stability_angle;
+  j["max_rotation_ratio"] = s.max_rotation_ratio;
+  j["max_abs_slide_m"] = s.max_abs_slide;
+  j["residual_slide_m"] = s.residual_slide;
+  j["max_uplift_m"] = s.max_uplift;
+  j["status"] = status_name(s.status);
+  j["tipped_over"] = s.tipped_over;
+  if (s.tipped_over) {
+    j["tip_over_time_s"] = s.tip_over_time;
+    j["instability_time_s"] = s.instability_time;
+  }
+  j["impacts"] = s.impacts;
+  j["end_time_s"] = s.end_time;
+  j["time_step_s"] = s.time_step;
+  j["steps"] = s.steps;
+  j["wall_time_s"] = report.wall_seconds;
+  return j;
+}
+
+}  // namespace
+
+void print_summary(std::ostream& out, const RunReport& report) {
+  const RunSummary& s = report.result.summary;
+  const ModelFacts& f = report.facts;
+  out << std::setprecision(4);
+  out << "case            " << (report.source ? report.source->title : "") << "\n";
+  out << "time step       " << s.time_step << " s (" << s.steps << " steps, " << report.wall_seconds << " s wall)\n";
+  out << "alpha           " << s.stability_angle << " rad (" << units::rad_to_deg(s.stability_angle) << " deg)\n";
+  out << "contact         K_n " << f.total_normal_stiffness << " N/m, static penetration " << f.static_penetration
+      << " m, beta " << f.damping_beta << " s\n";
+  out << "max |theta|     " << s.max_abs_rotation << " rad = " << s.max_rotation_ratio << " alpha\n";
+  out << "sliding         max " << s.max_abs_slide << " m, residual " << s.residual_slide << " m\n";
+  out << "max uplift      " << s.max_uplift << " m\n";
+  out << "impacts         " << s.impacts << "\n";
+  out << "result          " << status_name(s.status);
+  if (s.tipped_over) out << " at t = " << s.tip_over_time << " s (passed alpha at t = " << s.instability_time << " s)";
+  out << "\n";
+}
+
+void write_summary_json(const std::filesystem::path& file, const RunReport& report) {
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error(file.string() + ": cannot write");
+  out << summary_json(report).dump(2) << "\n";
+}
+
+void write_history_csv(const std::filesystem::path& file, const RunReport& report) {
+  const TimeHistory& h = report.result.history;
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error(file.string() + ": cannot write");
+  out << "# caskdem " << build_info::version << " time history; SI units\n";
+  out << "time_s,rotation_rad,angular_velocity_rad_s,slide_m,uplift_m,table_acceleration_m_s2,table_velocity_m_s,"
+         "table_displacement_m,table_vertical_acceleration_m_s2";
+  for (std::size_t k = 0; k < h.normal_force.size(); ++k) out << ",normal_force_" << k << "_N";
+  for (std::size_t k = 0; k < h.shear_force.size(); ++k) out << ",shear_force_" << k << "_N";
+  out << "\n" << std::setprecision(10);
+  for (std::size_t i = 0; i < h.time.size(); ++i) {
+    out << h.time[i] << ',' << h.rotation[i] << ',' << h.angular_velocity[i] << ',' << h.slide[i] << ',' << h.uplift[i]
+        << ',' << h.table_acceleration[i] << ',' << h.table_velocity[i] << ',' << h.table_displacement[i] << ','
+        << h.table_vertical_acceleration[i];
+    for (const auto& force : h.normal_force) out << ',' << force[i];
+    for (const auto& force : h.shear_force) out << ',' << force[i];
+    out << '\n';
+  }
+}
+
+void write_run_hdf5(const std::filesystem::path& file, const RunReport& report) {
+  const RunSummary& s = report.result.summary;
+  const TimeHistory& h = report.result.history;
+  hdf5::Group root = hdf5::create_file(file);
+  root.attribute("caskdem_version", std::string(build_info::version));
+  if (report.source) {
+    root.attribute("case_file", report.source->file.string());
+    root.attribute("case_toml", read_text(report.source->file));
+    root.attribute("title", report.source->title);
+  }
+  root.attribute("wall_time_s", report.wall_seconds);
+
+  hdf5::Group summary = root.group("summary");
+  summary.attribute("max_abs_rotation_rad", s.max_abs_rotation);
+  summary.attribute("stability_angle_rad", s.stability_angle);
+  summary.attribute("max_rotation_ratio", s.max_rotation_ratio);
+  summary.attribute("max_abs_slide_m", s.max_abs_slide);
+  summary.attribute("residual_slide_m", s.residual_slide);
+  summary.attribute("max_uplift_m", s.max_uplift);
+  summary.attribute("status", status_name(s.status));
+  summary.attribute("tipped_over", std::int64_t(s.tipped_over));
+  summary.attribute("tip_over_time_s", s.tip_over_time);
+  summary.attribute("instability_time_s", s.instability_time);
+  summary.attribute("impacts", std::int64_t(s.impacts));
+  summary.attribute("end_time_s", s.end_time);
+  summary.attribute("time_step_s", s.time_step);
+  summary.attribute("steps", std::int64_t(s.steps));
+
+  hdf5::Group model = root.group("model");
+  const Model& m = report.model;
+  std::vector<double> corner_x(m.corner_x, m.corner_x + m.corner_count);
+  std::vector<double> corner_y(m.corner_y, m.corner_y + m.corner_count);
+  std::vector<double> kn(m.corner_normal_stiffness, m.corner_normal_stiffness + m.corner_count);
+  std::vector<double> ks(m.corner_shear_stiffness, m.corner_shear_stiffness + m.corner_count);
+  model.write("corner_x", corner_x, "m");
+  model.write("corner_y", corner_y, "m");
+  model.write("corner_normal_stiffness", kn, "N/m");
+  model.write("corner_shear_stiffness", ks, "N/m");
+  model.attribute("rounding_radius_m", m.rounding_radius);
+  model.attribute("total_normal_stiffness_N_m", report.facts.total_normal_stiffness);
+  model.attribute("static_penetration_m", report.facts.static_penetration);
+  model.attribute("damping_beta_s", report.facts.damping_beta);
+  model.attribute("natural_frequency_rad_s", report.facts.natural_frequency);
+  model.attribute("tip_over_angle_rad", m.tip_over_angle);
+  if (report.source) {
+    model.attribute("mass_kg", report.source->parameters.mass);
+    model.attribute("inertia_kg_m2", report.source->parameters.inertia);
+    model.attribute("centre_of_mass_height_m", report.source->parameters.centre_of_mass.y);
+  }
+
+  if (!h.time.empty()) {
+    hdf5::Group history = root.group("history");
+    history.write("time", h.time, "s");
+    history.write("rotation", h.rotation, "rad");
+    history.write("angular_velocity", h.angular_velocity, "rad/s");
+    history.write("slide", h.slide, "m");
+    history.write("uplift", h.uplift, "m");
+    history.write("centre_x", h.centre_x, "m");
+    history.write("centre_y", h.centre_y, "m");
+    history.write("table_acceleration", h.table_acceleration, "m/s^2");
+    history.write("table_velocity", h.table_velocity, "m/s");
+    history.write("table_displacement", h.table_displacement, "m");
+    history.write("table_vertical_acceleration", h.table_vertical_acceleration, "m/s^2");
+    const std::size_t corners = h.normal_force.size();
+    std::vector<double> normal, shear;
+    for (std::size_t k = 0; k < corners; ++k) normal.insert(normal.end(), h.normal_force[k].begin(), h.normal_force[k].end());
+    for (std::size_t k = 0; k < corners; ++k) shear.insert(shear.end(), h.shear_force[k].begin(), h.shear_force[k].end());
+    history.write_matrix("normal_force", normal, corners, h.time.size(), "N");
+    history.write_matrix("shear_force", shear, corners, h.time.size(), "N");
+  }
+}
+
+void run_plot_script(const std::string& script, const std::vector<std::string>& arguments) {
+  const std::filesystem::path path = std::filesystem::path(build_info::source_dir) / "src" / "plots" / script;
+  std::string command = std::string(build_info::python) + " '" + path.string() + "'";
+  for (const std::string& a : arguments) command += " '" + a + "'";
+  command += " 2>&1";
+  std::FILE* pipe = popen(command.c_str(), "r");
+  if (!pipe) throw std::runtime_error("cannot start " + std::string(build_info::python));
+  std::string output;
+  char buffer[512];
+  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
+  const int status = pclose(pipe);
+  if (status != 0) throw std::runtime_error("plotting with " + script + " failed:\n" + output);
+}
+
+}  // namespace caskdem

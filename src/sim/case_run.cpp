@@ -1,0 +1,49 @@
+#include "sim/case_run.h"
+
+#include <algorithm>
+#include <chrono>
+
+#include "core/error.h"
+
+namespace caskdem {
+
+CaseMotions make_case_motions(const Case& c) {
+  if (c.horizontal.kind == MotionSpec::Kind::none && !c.vertical) {
+    throw InputError(located(c.file, 0, "the case has no [motion]; `run` needs one (`calibrate` does not)"));
+  }
+  CaseMotions m;
+  m.horizontal = make_motion(c.horizontal);
+  if (c.vertical) m.vertical = make_motion(*c.vertical);
+  return m;
+}
+
+Model build_case_model(const Case& c) {
+  try {
+    return build_model(c.model, c.parameters);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(located(c.file, 0, e.what()));
+  }
+}
+
+double case_duration(const Case& c, const CaseMotions& motions) {
+  if (c.duration > 0.0) return c.duration;
+  double motion_end = motions.horizontal->duration();
+  if (motions.vertical) motion_end = std::max(motion_end, motions.vertical->duration());
+  return motion_end + c.settle_time;
+}
+
+RunReport run_case(const Case& c, double output_interval) {
+  RunReport report;
+  report.source = &c;
+  report.model = build_case_model(c);
+  report.facts = model_facts(report.model, c.model, c.parameters);
+  const CaseMotions motions = make_case_motions(c);
+  const LaneParameters<double> lane = lane_parameters(report.model, c.parameters);
+  const auto start = std::chrono::steady_clock::now();
+  report.result = simulate(report.model, lane, rest_state(report.model, lane), motions.excitation(),
+                           {case_duration(c, motions), output_interval});
+  report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace caskdem

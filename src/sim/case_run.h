@@ -1,0 +1,26 @@
+#pragma once
+// Running a case file's analysis: build the model and motions, choose the duration, run.
+
+#include <memory>
+
+#include "casefile/case_file.h"
+#include "io/run_output.h"
+
+namespace caskdem {
+
+struct CaseMotions {
+  std::unique_ptr<motion::TableMotion> horizontal;
+  std::unique_ptr<motion::TableMotion> vertical;  // null when the case has none
+  Excitation excitation() const { return {horizontal.get(), vertical.get()}; }
+};
+
+CaseMotions make_case_motions(const Case& c);
+// Model from the case; a geometry or stability problem becomes an InputError naming the file.
+Model build_case_model(const Case& c);
+// Motion duration plus the settle time, unless the case gives a duration.
+double case_duration(const Case& c, const CaseMotions& motions);
+
+// Runs the case with histories at the case's output interval (0: none).
+RunReport run_case(const Case& c, double output_interval);
+
+}  // namespace caskdem
