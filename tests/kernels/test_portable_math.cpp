@@ -1,0 +1,78 @@
+// The bit-reproducible elementary functions against the C library's (which are accurate to
+// within an ulp or so): they must agree to a few ulp over the ranges the step uses, and give
+// the same bits in every SIMD width.
+
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <random>
+
+#include <gtest/gtest.h>
+#include <xsimd/xsimd.hpp>
+
+#include "kernels/portable_math.h"
+
+namespace caskdem::kernels {
+namespace {
+
+double ulps_apart(double a, double b) {
+  if (a == b) return 0.0;
+  return std::abs(a - b) / std::abs(std::nextafter(b, 2.0 * b + 1.0) - b);
+}
+
+TEST(PortableMath, ExpNegativeMatchesLibmToTwoUlp) {
+  double worst = 0.0;
+  for (int i = 0; i <= 400000; ++i) {
+    const double x = 40.0 * i / 400000.0;
+    worst = std::max(worst, ulps_apart(exp_negative(x), std::exp(-x)));
+  }
+  EXPECT_LE(worst, 2.0);
+  EXPECT_EQ(exp_negative(0.0), 1.0);
+  EXPECT_EQ(exp_negative(-3.0), 1.0);  // clamped: friction speeds are magnitudes
+  EXPECT_NEAR(exp_negative(1e6), std::exp(-40.0), 1e-30);
+}
+
+TEST(PortableMath, SinCosMatchLibmToTwoUlpOnRotationRange) {
+  double worst_sin = 0.0, worst_cos = 0.0, worst_abs = 0.0;
+  for (int i = -200000; i <= 200000; ++i) {
+    const double a = 4.0 * i / 200000.0;  // beyond +-pi/2, where a tipping cask stops
+    const SinCos<double> r = sin_cos(a);
+    if (std::abs(std::sin(a)) > 1e-3) worst_sin = std::max(worst_sin, ulps_apart(r.sin, std::sin(a)));
+    if (std::abs(std::cos(a)) > 1e-3) worst_cos = std::max(worst_cos, ulps_apart(r.cos, std::cos(a)));
+    worst_abs = std::max({worst_abs, std::abs(r.sin - std::sin(a)), std::abs(r.cos - std::cos(a))});
+  }
+  EXPECT_LE(worst_sin, 2.0);
+  EXPECT_LE(worst_cos, 2.0);
+  EXPECT_LE(worst_abs, 2.3e-16);
+}
+
+template <class Arch>
+void expect_same_bits_as_scalar() {
+  using Batch = xsimd::batch<double, Arch>;
+  constexpr std::size_t width = Batch::size;
+  std::mt19937_64 random(42);
+  std::uniform_real_distribution<double> angle(-3.0, 3.0), speed(0.0, 50.0);
+  alignas(64) double input[width], wide_sin[width], wide_cos[width], wide_exp[width];
+  for (int trial = 0; trial < 20000; ++trial) {
+    for (std::size_t l = 0; l < width; ++l) input[l] = angle(random);
+    const SinCos<Batch> r = sin_cos(Batch::load_aligned(input));
+    r.sin.store_aligned(wide_sin);
+    r.cos.store_aligned(wide_cos);
+    for (std::size_t l = 0; l < width; ++l) {
+      const SinCos<double> s = sin_cos(input[l]);
+      ASSERT_EQ(std::memcmp(&s.sin, &wide_sin[l], sizeof(double)), 0);
+      ASSERT_EQ(std::memcmp(&s.cos, &wide_cos[l], sizeof(double)), 0);
+    }
+    for (std::size_t l = 0; l < width; ++l) input[l] = speed(random);
+    exp_negative(Batch::load_aligned(input)).store_aligned(wide_exp);
+    for (std::size_t l = 0; l < width; ++l) {
+      const double s = exp_negative(input[l]);
+      ASSERT_EQ(std::memcmp(&s, &wide_exp[l], sizeof(double)), 0);
+    }
+  }
+}
+
+TEST(PortableMath, Sse2BatchGivesScalarBits) { expect_same_bits_as_scalar<xsimd::sse2>(); }
+
+}  // namespace
+}  // namespace caskdem::kernels
