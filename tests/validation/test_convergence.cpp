@@ -1,0 +1,47 @@
+// Validation 7, convergence in the time step: the maximum rotation changes by less than
+// 0.5 % between the paper's safety factor f_s = 0.01 and f_s = 0.005, on a sinusoidal and a
+// recorded motion. Larger factors are reported (README, "Time step") as the ground for a
+// faster default.
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <gtest/gtest.h>
+
+#include "support/paper_cases.h"
+
+namespace caskdem {
+namespace {
+
+double max_rotation(Case c, double safety_factor) {
+  c.model.safety_factor = safety_factor;
+  return run_case(c, 0.0).result.summary.max_abs_rotation;
+}
+
+void expect_converged(const Case& c) {
+  const double coarse = max_rotation(c, 0.01);
+  const double fine = max_rotation(c, 0.005);
+  const double change = coarse / fine - 1.0;
+  EXPECT_LT(std::abs(change), 0.005) << c.name << ": f_s 0.01 gives " << coarse << " rad, 0.005 gives " << fine;
+  ::testing::Test::RecordProperty(c.name + "_change_0.01_vs_0.005", std::to_string(change));
+  for (double f : {0.02, 0.05, 0.1}) {
+    const double value = max_rotation(c, f);
+    std::printf("%s: f_s %.3f max |theta| %.6f rad (%+.3f %% from f_s 0.005)\n", c.name.c_str(), f, value,
+                100.0 * (value / fine - 1.0));
+  }
+}
+
+TEST(Convergence, SinusoidalRockingOfThePaperModel) {
+  expect_converged(load_case(testing::case_path("model-1-3-sine.toml")));
+}
+
+TEST(Convergence, TwentySecondsOfElCentroOnThePaperModel) {
+  Case c = load_case(testing::case_path("model-1-3-elcentro-400gal.toml"));
+  c.horizontal.file = testing::motion_path("elcentro1940_ns_RSN6.AT2");
+  c.duration = 20.0;
+  expect_converged(c);
+}
+
+}  // namespace
+}  // namespace caskdem
