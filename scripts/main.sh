@@ -1,0 +1,8 @@
+#!/usr/bin/env bash
+# The README's first command: install the dependencies, build, and run the main job.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scripts/install-deps.sh
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCASKDEM_BUILD_TESTS=OFF -DCASKDEM_BUILD_BENCHMARKS=OFF >/dev/null
+cmake --build build -j"$(nproc)" --target caskdem
+build/src/caskdem run cases/default-pulse.toml --out results/default-pulse
