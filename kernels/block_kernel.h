@@ -37,25 +37,28 @@ void advance_lanes(const Model& model, BlockView block, const double* table_hori
   constexpr std::int64_t width = static_cast<std::int64_t>(lane::width<T>);
   const std::int64_t stride = block.lane_count;
   const std::int64_t corner_stride = CornerState<T>::field_count * stride;
-  for (int n = 0; n < step_count; ++n) {
-    const double time = static_cast<double>(first_step + n) * model.time_step;
-    for (std::int64_t lane_index = 0; lane_index < block.lane_count; lane_index += width) {
-      auto response = load_fields<T, Response<T>>(block.response, stride, lane_index);
-      // A batch whose lanes have all stopped has nothing left to do.
-      if (lane::all(response.status != lane::broadcast<T>(0.0))) continue;
-      auto parameters = load_fields<T, LaneParameters<T>>(block.parameters, stride, lane_index);
-      auto body = load_fields<T, BodyState<T>>(block.body, stride, lane_index);
-      CornerState<T> corners[kMaxCorners];
-      for (int k = 0; k < model.corner_count; ++k) {
-        corners[k] = load_fields<T, CornerState<T>>(block.corners + k * corner_stride, stride, lane_index);
-      }
-      step<Law>(model, parameters, table_horizontal[n], table_vertical[n], time, body, corners, response);
-      store_fields<T>(body, block.body, stride, lane_index);
-      for (int k = 0; k < model.corner_count; ++k) {
-        store_fields<T>(corners[k], block.corners + k * corner_stride, stride, lane_index);
-      }
-      store_fields<T>(response, block.response, stride, lane_index);
+  // One batch at a time through all the steps of the call: its state stays in registers and
+  // the stack frame instead of travelling through the block's arrays at every step.
+  for (std::int64_t lane_index = 0; lane_index < block.lane_count; lane_index += width) {
+    auto response = load_fields<T, Response<T>>(block.response, stride, lane_index);
+    if (lane::all(response.status != lane::broadcast<T>(0.0))) continue;
+    const auto parameters = load_fields<T, LaneParameters<T>>(block.parameters, stride, lane_index);
+    auto body = load_fields<T, BodyState<T>>(block.body, stride, lane_index);
+    CornerState<T> corners[kMaxCorners];
+    for (int k = 0; k < model.corner_count; ++k) {
+      corners[k] = load_fields<T, CornerState<T>>(block.corners + k * corner_stride, stride, lane_index);
     }
+    for (int n = 0; n < step_count; ++n) {
+      const double time = static_cast<double>(first_step + n) * model.time_step;
+      step<Law>(model, parameters, table_horizontal[n], table_vertical[n], time, body, corners, response);
+      // Tipped-over lanes are frozen; once the whole batch has stopped there is nothing to advance.
+      if (lane::all(response.status != lane::broadcast<T>(0.0))) break;
+    }
+    store_fields<T>(body, block.body, stride, lane_index);
+    for (int k = 0; k < model.corner_count; ++k) {
+      store_fields<T>(corners[k], block.corners + k * corner_stride, stride, lane_index);
+    }
+    store_fields<T>(response, block.response, stride, lane_index);
   }
 }
 

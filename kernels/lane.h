@@ -9,8 +9,10 @@
 // min/max follow the x86 minpd/maxpd rule (the second operand when either is NaN);
 // the scalar overloads are written to match it.
 
+#include <bit>
 #include <cmath>
 #include <cstddef>
+#include <cstdint>
 #include <type_traits>
 
 #include <xsimd/xsimd.hpp>
@@ -93,6 +95,25 @@ inline bool all(const xsimd::batch_bool<double, A>& m) {
   return xsimd::all(m);
 }
 
+// 2^k, exactly, for integer-valued k in [-1022, 1023], built from the exponent bits:
+// k + (2^52 + 1023) has the bit pattern 0x4330000000000000 + (k + 1023), and shifting it
+// left by 52 leaves (k + 1023) in the exponent field of a double with a zero mantissa.
+inline double power_of_two(double k) {
+  const std::uint64_t bits = std::bit_cast<std::uint64_t>(k + 4503599627371519.0) << 52;
+  return std::bit_cast<double>(bits);
+}
+template <class A>
+inline xsimd::batch<double, A> power_of_two(const xsimd::batch<double, A>& k) {
+  using Bits = xsimd::batch<std::uint64_t, A>;
+  const Bits bits = xsimd::bitwise_cast<Bits>(k + xsimd::batch<double, A>(4503599627371519.0)) << 52;
+  return xsimd::bitwise_cast<xsimd::batch<double, A>>(bits);
+}
+
+template <class A>
+inline void store(double* field, const xsimd::batch<double, A>& value) {
+  value.store_aligned(field);
+}
+
 // ---- both ----------------------------------------------------------------------------
 template <class T>
 inline T broadcast(double value) {
@@ -113,10 +134,6 @@ inline T load(const double* field) {
   }
 }
 inline void store(double* field, double value) { *field = value; }
-template <class A>
-inline void store(double* field, const xsimd::batch<double, A>& value) {
-  value.store_aligned(field);
-}
 
 template <class T>
 inline T clamp(const T& value, const T& low, const T& high) {

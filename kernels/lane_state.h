@@ -64,12 +64,12 @@ struct CornerState {
 template <class T>
 struct Response {
   T status;              // LaneStatus as a number
-  T end_time;            // time the lane stopped (status != running) or the last observed time
+  T end_time;            // time the lane stopped, or the end of the run (set by finish())
   T max_abs_rotation;    // rad
   T max_abs_slide;       // m, base centre relative to the floor
   T max_uplift;          // m, largest rise of a corner above its rest position
-  T final_rotation;      // rad, at end_time
-  T final_slide;         // m, at end_time (residual sliding)
+  T final_rotation;      // rad, at end_time (set by finish())
+  T final_slide;         // m, at end_time: the residual sliding (set by finish())
   T base_x0;             // m, base centre at t = 0 (sliding datum)
   T rocking_side;        // -1, 0 (not yet rocked), +1: the side |theta| last passed the rocking threshold on
   T impacts;             // number of changes of rocking side

@@ -71,53 +71,60 @@ inline void step(const Model& model, const LaneParameters<T>& p, double table_ho
   const T base_x = body.x - c * p.centre_x + s * p.centre_y;  // body-frame origin, the base centre
   const T slide = base_x - response.base_x0;
   const T abs_rotation = lane::abs(body.theta);
-  const T abs_omega = lane::abs(body.omega);
   if (forces) {
     forces->uplift = uplift;
     forces->slide = slide;
   }
 
+  Response<T>& r = response;
   const auto finite = lane::isfinite(body.x + body.y + body.theta + body.vx + body.vy + body.omega);
   const auto tipped = abs_rotation >= broadcast<T>(model.tip_over_angle);
   const auto left_floor = lowest_gap > broadcast<T>(model.lift_off_height);
   const double pad = model.pad_clearance > 0.0 ? model.pad_clearance : 1e300;
   const auto slid_off = lane::abs(slide) > broadcast<T>(pad);
-  // First matching criterion wins: a NaN state says nothing about tipping.
-  T verdict = select(slid_off, broadcast<T>(double(LaneStatus::slid_off_pad)), zero);
-  verdict = select(left_floor, broadcast<T>(double(LaneStatus::left_floor)), verdict);
-  verdict = select(tipped, broadcast<T>(double(LaneStatus::tipped_over)), verdict);
-  verdict = select(!finite, broadcast<T>(double(LaneStatus::non_finite)), verdict);
-  response.status = select(active, verdict, response.status);
-  const auto running = response.status == zero;
-  const auto observing = active && finite;  // a non-finite state is flagged, never recorded
+  const auto stopping = active && (!finite || tipped || left_floor || slid_off);
+  // Stopping is rare: the verdict is worked out only in a batch where some lane stops
+  // (a branch on the whole batch, so every lane's result is the same either way).
+  if (lane::any(stopping)) {
+    // First matching criterion wins: a NaN state says nothing about tipping.
+    T verdict = select(slid_off, broadcast<T>(double(LaneStatus::slid_off_pad)), zero);
+    verdict = select(left_floor, broadcast<T>(double(LaneStatus::left_floor)), verdict);
+    verdict = select(tipped, broadcast<T>(double(LaneStatus::tipped_over)), verdict);
+    verdict = select(!finite, broadcast<T>(double(LaneStatus::non_finite)), verdict);
+    r.status = select(stopping, verdict, r.status);
+    r.end_time = select(stopping, broadcast<T>(time), r.end_time);
+  }
+  const auto running = r.status == zero;
 
-  Response<T>& r = response;
-  r.end_time = select(active, broadcast<T>(time), r.end_time);
-  r.max_abs_rotation = select(observing, lane::max(r.max_abs_rotation, abs_rotation), r.max_abs_rotation);
-  r.max_abs_slide = select(observing, lane::max(r.max_abs_slide, lane::abs(slide)), r.max_abs_slide);
-  r.max_uplift = select(observing, lane::max(r.max_uplift, uplift), r.max_uplift);
-  r.final_rotation = select(observing, body.theta, r.final_rotation);
-  r.final_slide = select(observing, slide, r.final_slide);
+  // Running maxima. A stopped lane's state is frozen, so observing it again changes nothing;
+  // max(x, m) returns m when x is NaN (minpd/maxpd rule), so a non-finite state is never recorded.
+  r.max_abs_rotation = lane::max(abs_rotation, r.max_abs_rotation);
+  r.max_abs_slide = lane::max(lane::abs(slide), r.max_abs_slide);
+  r.max_uplift = lane::max(uplift, r.max_uplift);
 
   // Rocking half-cycles: the side changes when theta passes the threshold on the other
   // side; each change is an impact. A half-cycle's peak |omega| is taken while the cask
   // falls toward the impact (theta omega < 0), as on a measured record: the impact that
   // opened the half-cycle is still decelerating the cask when the side changes.
   const T threshold = broadcast<T>(model.rocking_threshold_angle);
-  T side = select(body.theta > threshold, one, select(body.theta < -threshold, -one, r.rocking_side));
-  const auto flip = observing && (side * r.rocking_side < zero);
-  for (int j = 0; j < kPeakCount; ++j) {
-    r.peak[j] = select(flip && (r.impacts == broadcast<T>(double(j))), r.current_peak, r.peak[j]);
+  const T side = select(body.theta > threshold, one, select(body.theta < -threshold, -one, r.rocking_side));
+  const auto flip = side * r.rocking_side < zero;
+  if (lane::any(flip)) {
+    for (int j = 0; j < kPeakCount; ++j) {
+      r.peak[j] = select(flip && (r.impacts == broadcast<T>(double(j))), r.current_peak, r.peak[j]);
+    }
+    r.impacts = select(flip, r.impacts + one, r.impacts);
+    r.current_peak = select(flip, zero, r.current_peak);
   }
-  r.impacts = select(flip, r.impacts + one, r.impacts);
-  const auto falling = observing && (body.theta * body.omega < zero);
-  r.current_peak = select(flip, zero, select(falling, lane::max(r.current_peak, abs_omega), r.current_peak));
-  r.rocking_side = select(observing, side, r.rocking_side);
+  const auto falling = body.theta * body.omega < zero;
+  r.current_peak = select(falling, lane::max(lane::abs(body.omega), r.current_peak), r.current_peak);
+  r.rocking_side = side;
 
+  // When a tipping cask passed its stability angle for the last time.
   const auto above = abs_rotation > broadcast<T>(model.stability_angle);
-  const auto rose_past_alpha = observing && above && (r.above_stability < broadcast<T>(0.5));
-  r.instability_time = select(rose_past_alpha, broadcast<T>(time), r.instability_time);
-  r.above_stability = select(observing, lane::as_number<T>(above), r.above_stability);
+  const auto rose_past_alpha = above && (r.above_stability < broadcast<T>(0.5));
+  if (lane::any(rose_past_alpha)) r.instability_time = select(rose_past_alpha, broadcast<T>(time), r.instability_time);
+  r.above_stability = lane::as_number<T>(above);
 
   // ---- advance to t_{n+1} (stopped lanes keep their state) --------------------------------
   const T accel_x = force_x * p.inverse_mass - p.horizontal_scale * broadcast<T>(table_horizontal);
@@ -136,6 +143,24 @@ inline void step(const Model& model, const LaneParameters<T>& p, double table_ho
     corners[k].shear_spring = select(running, next[k].shear_spring, corners[k].shear_spring);
     corners[k].slipping = select(running, next[k].slipping, corners[k].slipping);
   }
+}
+
+// The end of a run: the final rotation and sliding (residual sliding) from the final state,
+// and the end time of lanes still running. A stopped lane's state is the one it stopped in;
+// a non-finite lane reports zeros there (its status says why).
+template <class T>
+inline void finish(const Model& model, const LaneParameters<T>& p, const BodyState<T>& body, double end_time,
+                   Response<T>& response) {
+  using lane::broadcast;
+  using lane::select;
+  const SinCos<T> rotation = sin_cos(body.theta);
+  const T slide = body.x - rotation.cos * p.centre_x + rotation.sin * p.centre_y - response.base_x0;
+  const auto finite = lane::isfinite(slide + body.theta);
+  const auto running = response.status == broadcast<T>(0.0);
+  response.final_rotation = select(finite, body.theta, broadcast<T>(0.0));
+  response.final_slide = select(finite, slide, broadcast<T>(0.0));
+  response.end_time = select(running, broadcast<T>(end_time), response.end_time);
+  (void)model;
 }
 
 }  // namespace caskdem::kernels
