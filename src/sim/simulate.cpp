@@ -117,6 +117,7 @@ RunResult simulate(const Model& model, const LaneParameters<double>& lane, const
       steps = run_steps<FrictionLaw::tabulated>(model, lane, body, corners, response, excitation, step_count, output_every, history);
       break;
   }
+  kernels::finish(model, lane, body, static_cast<double>(steps) * model.time_step, response);
   result.summary = summarise(model, response, steps);
   return result;
 }
