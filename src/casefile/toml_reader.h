@@ -52,6 +52,9 @@ class TableReader {
   double non_negative(std::string_view key, double value) const;
   double in_range(std::string_view key, double value, double low, double high) const;
 
+  // Marks a key as known when the caller reads its value through toml++ itself.
+  void accept(std::string_view key) { read_.insert(std::string(key)); }
+
   // Unknown keys are errors: call when every known key has been read.
   void reject_unknown_keys() const;
 

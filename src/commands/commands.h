@@ -10,5 +10,7 @@ void add_calibrate(CLI::App& app);
 void add_sweep(CLI::App& app);
 void add_motion(CLI::App& app);
 void add_similarity(CLI::App& app);
+void add_ensemble(CLI::App& app);
+void add_plot(CLI::App& app);
 
 }  // namespace caskdem::commands

@@ -18,6 +18,8 @@ int main(int argc, char** argv) {
   caskdem::commands::add_sweep(app);
   caskdem::commands::add_motion(app);
   caskdem::commands::add_similarity(app);
+  caskdem::commands::add_ensemble(app);
+  caskdem::commands::add_plot(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

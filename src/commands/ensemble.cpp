@@ -1,0 +1,111 @@
+// caskdem ensemble FILE: Monte Carlo realisations in SIMD lanes, stripe probabilities and
+// fragility curves, written to HDF5 (resumable) with a PNG.
+
+#include <omp.h>
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+
+#include "commands/commands.h"
+#include "core/error.h"
+#include "core/units.h"
+#include "ensemble/execute.h"
+#include "io/run_output.h"
+
+namespace caskdem::commands {
+
+namespace {
+
+std::string format_level(IntensityMeasure measure, double value) {
+  std::ostringstream out;
+  out << std::setprecision(4);
+  switch (measure) {
+    case IntensityMeasure::pga: out << units::si_to_g(value) << " g"; break;
+    case IntensityMeasure::pgv: out << 100.0 * value << " cm/s"; break;
+    default: out << value; break;
+  }
+  return out.str();
+}
+
+}  // namespace
+
+void add_ensemble(CLI::App& app) {
+  struct Options {
+    std::string file, out, isa = "automatic";
+    int threads = 0;
+    bool resume = false, no_plot = false, quiet = false;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("ensemble", "Run an ensemble: realisations, stripe probabilities, fragility curves");
+  cmd->add_option("file", options->file, "Ensemble file (TOML)")->required();
+  cmd->add_option("--out", options->out, "Result file (HDF5; default results/<name>.h5)");
+  cmd->add_flag("--resume", options->resume, "Continue an interrupted run from its result file");
+  cmd->add_option("--threads", options->threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--isa", options->isa, "Instruction set: automatic, avx512f, avx2, sse2 or scalar");
+  cmd->add_flag("--no-plot", options->no_plot, "Do not make the PNG");
+  cmd->add_flag("--quiet", options->quiet, "No progress output");
+  cmd->callback([options]() {
+    const EnsembleSpec spec = load_ensemble(options->file);
+    InstructionSet isa;
+    try {
+      isa = parse_instruction_set(options->isa);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string("--isa: ") + e.what());
+    }
+    const std::filesystem::path out =
+        options->out.empty() ? std::filesystem::path("results") / (spec.name + ".h5") : std::filesystem::path(options->out);
+    if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
+    if (options->resume && !std::filesystem::exists(out)) {
+      throw InputError(out.string() + ": no such file to resume (run without --resume first)");
+    }
+    const EnsemblePlan plan(spec, isa);
+    std::cout << "ensemble        " << spec.title << "\n";
+    std::cout << "realisations    " << plan.size() << " (" << spec.levels.size() << " stripes x "
+              << spec.realisations_per_stripe << ", " << plan.motion_count() << " motions)\n";
+    std::cout << "time step       " << plan.model().time_step << " s, alpha " << plan.stability_angle() << " rad\n";
+    ExecuteOptions execute;
+    execute.isa = isa;
+    execute.threads = options->threads;
+    execute.resume = options->resume;
+    execute.progress = !options->quiet;
+    execute.output = out;
+    const ExecuteReport report = execute_ensemble(plan, execute);
+    std::cout << std::setprecision(4) << "wall time       " << report.wall_seconds << " s (" << report.realisations_run
+              << " realisations in this run)\n";
+    for (const LimitStateSummary& s : report.limit_states) {
+      std::cout << std::left << std::setw(16) << s.limit_state.name;
+      if (s.fit.fitted) {
+        std::cout << "median " << format_level(spec.measure, s.fit.median) << ", log-std " << s.fit.log_std
+                  << " (max misfit " << s.misfit.max_abs_difference << ", chi-square p " << s.misfit.p_value << ")\n";
+      } else {
+        std::cout << "no curve: " << s.fit.reason << "\n";
+      }
+    }
+    std::cout << "wrote           " << out.string() << "\n";
+    if (!options->no_plot) {
+      std::filesystem::path png = out;
+      png.replace_extension(".png");
+      run_plot_script("plot_fragility.py", {out.string(), png.string()});
+      std::cout << "wrote           " << png.string() << "\n";
+    }
+  });
+}
+
+void add_plot(CLI::App& app) {
+  struct Options {
+    std::string file, out;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand("plot", "Plot the fragility curves of an ensemble result file");
+  cmd->add_option("file", options->file, "Ensemble result file (HDF5)")->required()->check(CLI::ExistingFile);
+  cmd->add_option("--out", options->out, "PNG file (default: beside the result file)");
+  cmd->callback([options]() {
+    std::filesystem::path png = options->out;
+    if (png.empty()) png = std::filesystem::path(options->file).replace_extension(".png");
+    run_plot_script("plot_fragility.py", {options->file, png.string()});
+    std::cout << "wrote " << png.string() << "\n";
+  });
+}
+
+}  // namespace caskdem::commands

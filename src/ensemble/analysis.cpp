@@ -1,0 +1,62 @@
+#include "ensemble/analysis.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace caskdem {
+
+bool exceeds(const LimitState& limit_state, const EnsembleResults& r, std::int64_t i) {
+  const auto status = static_cast<LaneStatus>(r.status[i]);
+  if (status == LaneStatus::tipped_over || status == LaneStatus::left_floor || status == LaneStatus::slid_off_pad) {
+    return true;  // a cask that is down or gone exceeds every limit state
+  }
+  switch (limit_state.kind) {
+    case LimitState::Kind::tip_over: return false;
+    case LimitState::Kind::rotation_ratio: return r.max_rotation_ratio[i] >= limit_state.threshold;
+    case LimitState::Kind::sliding: return r.max_abs_slide[i] >= limit_state.threshold;
+  }
+  return false;
+}
+
+std::vector<LimitStateSummary> analyse(const EnsemblePlan& plan, const EnsembleResults& r) {
+  const EnsembleSpec& spec = plan.spec();
+  const int stripes = static_cast<int>(spec.levels.size());
+  const int motions = plan.motion_count();
+  // Intensity grid for the fitted curves and bands: from a tenth of the lowest level to
+  // twice the highest, log-spaced.
+  std::vector<double> grid;
+  const double low = 0.1 * spec.levels.front(), high = 2.0 * spec.levels.back();
+  for (int k = 0; k <= 200; ++k) grid.push_back(low * std::pow(high / low, k / 200.0));
+
+  std::vector<LimitStateSummary> summaries;
+  for (std::size_t l = 0; l < spec.limit_states.size(); ++l) {
+    const LimitState& limit_state = spec.limit_states[l];
+    fragility::StripeData data;
+    data.levels = spec.levels;
+    data.trials.assign(motions, std::vector<std::int64_t>(stripes, 0));
+    data.counts.assign(motions, std::vector<std::int64_t>(stripes, 0));
+    for (std::int64_t i = 0; i < r.size; ++i) {
+      if (!r.completed[i] || static_cast<LaneStatus>(r.status[i]) == LaneStatus::non_finite) continue;
+      ++data.trials[r.motion[i]][r.stripe[i]];
+      if (exceeds(limit_state, r, i)) ++data.counts[r.motion[i]][r.stripe[i]];
+    }
+    LimitStateSummary s;
+    s.limit_state = limit_state;
+    s.stripes = fragility::stripe_probabilities(data, spec.confidence);
+    std::vector<std::int64_t> trials, counts;
+    for (const auto& p : s.stripes) {
+      trials.push_back(p.trials);
+      counts.push_back(p.count);
+    }
+    s.fit = fragility::fit_lognormal(spec.levels, trials, counts);
+    if (s.fit.fitted) {
+      // Each limit state gets its own stream of bootstrap numbers.
+      s.band = fragility::bootstrap_band(data, grid, spec.bootstrap_replicates, spec.confidence, spec.seed + 7919 * (l + 1));
+      s.misfit = fragility::misfit(s.fit, s.stripes);
+    }
+    summaries.push_back(std::move(s));
+  }
+  return summaries;
+}
+
+}  // namespace caskdem

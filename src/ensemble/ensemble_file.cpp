@@ -1,0 +1,267 @@
+#include "ensemble/ensemble_file.h"
+
+#include <cmath>
+#include <fstream>
+#include <sstream>
+
+#include "core/error.h"
+
+namespace caskdem {
+
+namespace {
+
+Dimension dimension_of(const std::string& parameter) {
+  if (parameter == "friction_decay_speed") return Dimension::velocity;
+  if (parameter == "mass") return Dimension::mass;
+  if (parameter == "centre_height") return Dimension::length;
+  return Dimension::dimensionless;
+}
+
+Distribution read_distribution(TableReader& t, const std::string& parameter) {
+  const Dimension dimension = dimension_of(parameter);
+  Distribution d;
+  const std::string kind = t.choice("distribution", {"constant", "uniform", "normal", "lognormal"});
+  auto finite = [&](const char* key) {
+    const double v = t.quantity(key, dimension);
+    if (!std::isfinite(v)) t.fail(key, "expected a finite number");
+    return v;
+  };
+  if (kind == "constant") {
+    d.kind = Distribution::Kind::constant;
+    d.first = finite("value");
+  } else if (kind == "uniform") {
+    d.kind = Distribution::Kind::uniform;
+    d.first = finite("low");
+    d.second = finite("high");
+    if (!(d.second > d.first)) t.fail("high", "expected high > low");
+  } else if (kind == "normal") {
+    d.kind = Distribution::Kind::normal;
+    d.first = finite("mean");
+    d.second = t.positive("std", finite("std"));
+  } else {
+    d.kind = Distribution::Kind::lognormal;
+    d.first = t.positive("median", finite("median"));
+    d.second = t.positive("log_std", t.quantity("log_std", Dimension::dimensionless));
+  }
+  if (kind == "normal" || kind == "lognormal") {
+    if (auto low = t.optional_quantity("low", dimension)) d.low = *low;
+    if (auto high = t.optional_quantity("high", dimension)) d.high = *high;
+    if (!(d.high > d.low)) t.fail("high", "expected high > low");
+  }
+  // Physical ranges: coefficients and masses cannot be negative; restitution lies in (0, 1).
+  const double lowest = d.lowest(), highest = d.highest();
+  const std::string key = kind == "constant" ? "value" : (kind == "uniform" ? "low" : "low");
+  if (parameter == "restitution") {
+    if (!(lowest > 0.0 && highest < 1.0)) {
+      t.fail(key, "a restitution must lie in (0, 1): bound the distribution with low and high inside it");
+    }
+  } else if (parameter == "mass" || parameter == "centre_height" || parameter == "friction_decay_speed") {
+    // A lognormal is positive everywhere; the others need a positive lower bound.
+    if (d.kind != Distribution::Kind::lognormal && !(lowest > 0.0)) {
+      t.fail(key, "expected a positive lower bound (give low for a normal distribution)");
+    }
+  } else if (!(lowest >= 0.0)) {
+    t.fail(key, "a friction coefficient cannot be negative (give low = 0 or more for a normal distribution)");
+  }
+  t.reject_unknown_keys();
+  return d;
+}
+
+std::string format_threshold(double value) {
+  std::ostringstream out;
+  out << value;
+  return out.str();
+}
+
+}  // namespace
+
+std::string intensity_name(IntensityMeasure measure) {
+  switch (measure) {
+    case IntensityMeasure::pga: return "pga";
+    case IntensityMeasure::pgv: return "pgv";
+    case IntensityMeasure::pga_ratio: return "pga_ratio";
+    case IntensityMeasure::pgv_ratio: return "pgv_ratio";
+  }
+  return "pga";
+}
+
+EnsembleSpec load_ensemble(const std::filesystem::path& file) {
+  const toml::table document = parse_toml_file(file);
+  TableReader root(document, file, "");
+  EnsembleSpec e;
+  e.file = file;
+  e.name = file.stem().string();
+  {
+    std::ifstream in(file);
+    std::ostringstream text;
+    text << in.rdbuf();
+    e.toml_text = text.str();
+  }
+  e.title = root.optional_string("title").value_or(e.name);
+
+  Case& c = e.base;
+  c.file = file;
+  c.name = e.name;
+  c.title = e.title;
+  read_cask(root, c);
+  const RealisationParameters mass = nominal_parameters(c.model);
+  c.parameters.mass = mass.mass;
+  c.parameters.inertia = mass.inertia;
+  c.parameters.centre_of_mass = mass.centre_of_mass;
+  read_contact(root, c);
+  read_friction(root, c);
+  read_damping(root, c);
+  read_integration(root, c);
+  read_limits(root, c);
+  if (root.has_table("free_vibration")) {
+    TableReader t = root.table("free_vibration");
+    c.free_vibration.initial_tilt_ratio =
+        t.in_range("initial_tilt_ratio", t.quantity_or("initial_tilt_ratio", Dimension::dimensionless, 0.5), 0.01, 0.99);
+    c.free_vibration.ratios = static_cast<int>(t.optional_integer("ratios").value_or(3));
+    if (c.free_vibration.ratios < 1 || c.free_vibration.ratios > kPeakCount - 1) t.fail("ratios", "expected 1 to 7");
+    t.reject_unknown_keys();
+  }
+
+  // Motions: an array of tables, each like a case's [motion].
+  const toml::node* motions = document.get("motions");
+  const toml::array* list = motions ? motions->as_array() : nullptr;
+  if (!list || list->empty()) {
+    throw InputError(located(file, motions ? static_cast<long>(motions->source().begin.line) : 0,
+                             "key motions: expected one or more [[motions]] tables"));
+  }
+  root.accept("motions");
+  for (std::size_t i = 0; i < list->size(); ++i) {
+    const toml::table* table = (*list)[i].as_table();
+    if (!table) throw InputError(located(file, static_cast<long>((*list)[i].source().begin.line), "key motions: expected tables"));
+    TableReader t(*table, file, "motions[" + std::to_string(i) + "]", static_cast<long>(table->source().begin.line));
+    std::string label = t.optional_string("name").value_or("");
+    MotionSpec m = read_motion(t);
+    if (m.kind == MotionSpec::Kind::none) t.fail("kind", "an ensemble motion must move the table");
+    if (label.empty()) {
+      label = m.kind == MotionSpec::Kind::record ? m.file.stem().string() : "motion " + std::to_string(i + 1);
+    }
+    t.reject_unknown_keys();
+    e.motions.push_back(m);
+    e.motion_names.push_back(label);
+  }
+
+  if (root.has_table("uncertain")) {
+    TableReader t = root.table("uncertain");
+    for (const std::string& name : uncertain_parameter_names()) {
+      t.accept(name);
+      if (!t.has(name)) continue;
+      if (!t.has_table(name)) t.fail(name, "expected a table { distribution = \"...\", ... }");
+      TableReader p = t.table(name);
+      e.uncertain[name] = read_distribution(p, name);
+    }
+    t.reject_unknown_keys();
+    const FrictionLaw law = c.model.friction_law;
+    if (e.uncertain.count("friction_kinetic") && law != FrictionLaw::static_kinetic && law != FrictionLaw::exponential) {
+      t.fail("friction_kinetic", "the friction law has no kinetic coefficient (use static_kinetic or exponential)");
+    }
+    if (e.uncertain.count("friction_decay_speed") && law != FrictionLaw::exponential) {
+      t.fail("friction_decay_speed", "only the exponential friction law has a decay speed");
+    }
+    if (e.uncertain.count("friction_static") && law == FrictionLaw::tabulated) {
+      t.fail("friction_static", "a tabulated friction law cannot vary its coefficient");
+    }
+  }
+
+  {
+    TableReader t = root.table("intensity");
+    const std::string measure = t.choice("measure", {"pga", "pgv", "pga_ratio", "pgv_ratio"});
+    e.measure = measure == "pga" ? IntensityMeasure::pga
+                : measure == "pgv" ? IntensityMeasure::pgv
+                : measure == "pga_ratio" ? IntensityMeasure::pga_ratio
+                                         : IntensityMeasure::pgv_ratio;
+    const Dimension dimension = e.measure == IntensityMeasure::pga   ? Dimension::acceleration
+                                : e.measure == IntensityMeasure::pgv ? Dimension::velocity
+                                                                     : Dimension::dimensionless;
+    const toml::node* levels = t.has("levels") ? document["intensity"]["levels"].node() : nullptr;
+    const toml::array* values = levels ? levels->as_array() : nullptr;
+    t.accept("levels");
+    if (!values || values->empty()) t.fail("levels", "expected a non-empty list of intensity levels (stripes)");
+    for (const toml::node& v : *values) {
+      std::string error;
+      std::optional<double> level;
+      if (auto number = v.value<double>(); number && (v.is_floating_point() || v.is_integer())) level = *number;
+      if (auto text = v.value<std::string>()) level = parse_quantity(*text, dimension, error);
+      if (!level || !std::isfinite(*level) || !(*level > 0.0)) {
+        throw InputError(located(file, static_cast<long>(v.source().begin.line),
+                                 "key intensity.levels: expected positive " + dimension_name(dimension) + " values" +
+                                     (error.empty() ? "" : " (" + error + ")")));
+      }
+      if (!e.levels.empty() && !(*level > e.levels.back())) t.fail("levels", "expected increasing levels");
+      e.levels.push_back(*level);
+    }
+    const long count = t.integer("realisations");
+    if (count < 1) t.fail("realisations", "expected at least 1 realisation per stripe");
+    e.realisations_per_stripe = count;
+    t.reject_unknown_keys();
+  }
+
+  if (root.has_table("sampling")) {
+    TableReader t = root.table("sampling");
+    e.sampling = t.choice("method", {"latin_hypercube", "monte_carlo"}, "latin_hypercube") == "monte_carlo"
+                     ? SamplingMethod::monte_carlo
+                     : SamplingMethod::latin_hypercube;
+    const long seed = t.optional_integer("seed").value_or(1);
+    if (seed < 0) t.fail("seed", "expected a non-negative whole number");
+    e.seed = static_cast<std::uint64_t>(seed);
+    t.reject_unknown_keys();
+  }
+
+  {
+    TableReader t = root.table("limit_states");
+    if (t.boolean_or("tip_over", true)) e.limit_states.push_back({LimitState::Kind::tip_over, 0.0, "tip_over"});
+    const toml::node* ratios = document["limit_states"]["rotation_ratio"].node();
+    t.accept("rotation_ratio");
+    if (ratios) {
+      const toml::array* list_of = ratios->as_array();
+      if (!list_of) t.fail("rotation_ratio", "expected a list of max |theta| / alpha thresholds");
+      for (const toml::node& v : *list_of) {
+        auto r = v.value<double>();
+        if (!r || !(*r > 0.0)) t.fail("rotation_ratio", "expected positive thresholds");
+        e.limit_states.push_back({LimitState::Kind::rotation_ratio, *r, "rotation_ratio_" + format_threshold(*r)});
+      }
+    }
+    const toml::node* slides = document["limit_states"]["sliding"].node();
+    t.accept("sliding");
+    if (slides) {
+      const toml::array* list_of = slides->as_array();
+      if (!list_of) t.fail("sliding", "expected a list of sliding distances such as [\"5 cm\"]");
+      for (const toml::node& v : *list_of) {
+        std::string error;
+        std::optional<double> d;
+        if (auto number = v.value<double>(); number && (v.is_floating_point() || v.is_integer())) d = *number;
+        if (auto text = v.value<std::string>()) d = parse_quantity(*text, Dimension::length, error);
+        if (!d || !(*d > 0.0)) t.fail("sliding", "expected positive distances" + (error.empty() ? "" : " (" + error + ")"));
+        e.limit_states.push_back({LimitState::Kind::sliding, *d, "sliding_" + format_threshold(*d) + "m"});
+      }
+    }
+    if (e.limit_states.empty()) t.fail("tip_over", "expected at least one limit state");
+    t.reject_unknown_keys();
+  }
+
+  if (root.has_table("fragility")) {
+    TableReader t = root.table("fragility");
+    const long replicates = t.optional_integer("bootstrap").value_or(200);
+    if (replicates < 0 || replicates > 100000) t.fail("bootstrap", "expected 0 to 100000 replicates");
+    e.bootstrap_replicates = static_cast<int>(replicates);
+    e.confidence = t.in_range("confidence", t.quantity_or("confidence", Dimension::dimensionless, 0.95), 0.5, 0.999);
+    t.reject_unknown_keys();
+  }
+  if (root.has_table("run")) {
+    TableReader t = root.table("run");
+    const long lanes = t.optional_integer("block_lanes").value_or(64);
+    if (lanes < 1 || lanes > 4096) t.fail("block_lanes", "expected 1 to 4096");
+    e.block_lanes = static_cast<int>(lanes);
+    e.checkpoint_interval = t.positive("checkpoint_interval", t.quantity_or("checkpoint_interval", Dimension::time, 10.0));
+    t.reject_unknown_keys();
+  }
+  if (root.has("motion")) root.fail("motion", "an ensemble lists its motions as [[motions]] tables");
+  root.reject_unknown_keys();
+  return e;
+}
+
+}  // namespace caskdem

@@ -1,0 +1,67 @@
+#pragma once
+// Ensemble files (ensembles/*.toml): the cask and contact as in a case file, the uncertain
+// parameters and their distributions, the motions, the intensity measure and its stripes,
+// the sampling, and the limit states. The README's "Ensemble file reference" lists every
+// key; problems are InputErrors naming the file, line and key.
+
+#include <cstdint>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "casefile/case_file.h"
+#include "ensemble/distributions.h"
+#include "ensemble/sampling.h"
+
+namespace caskdem {
+
+enum class IntensityMeasure {
+  pga,        // peak table acceleration, m/s^2
+  pgv,        // peak table velocity, m/s
+  pga_ratio,  // PGA / (g tan alpha): uplift starts near 1
+  pgv_ratio,  // PGV p / (g tan alpha): the overturning-relevant velocity measure
+};
+std::string intensity_name(IntensityMeasure measure);
+
+struct LimitState {
+  enum class Kind { tip_over, rotation_ratio, sliding };
+  Kind kind = Kind::tip_over;
+  double threshold = 0.0;  // max |theta| / alpha, or sliding in m
+  std::string name;        // "tip_over", "rotation_ratio_0.5", "sliding_0.05m"
+};
+
+// The parameters that may vary, in the order of the sampler's dimensions.
+inline const std::vector<std::string>& uncertain_parameter_names() {
+  static const std::vector<std::string> names = {"friction_static", "friction_kinetic", "friction_decay_speed",
+                                                 "restitution",     "mass",             "centre_height"};
+  return names;
+}
+
+struct EnsembleSpec {
+  std::filesystem::path file;
+  std::string name;   // file stem
+  std::string title;
+  std::string toml_text;  // the file as read, stored with the results
+  Case base;              // cask, contact, friction, damping, integration, limits, free vibration
+  std::vector<MotionSpec> motions;
+  std::vector<std::string> motion_names;
+  std::map<std::string, Distribution> uncertain;  // by name, among uncertain_parameter_names()
+  IntensityMeasure measure = IntensityMeasure::pga;
+  std::vector<double> levels;                     // SI (or dimensionless), increasing
+  std::int64_t realisations_per_stripe = 0;
+  SamplingMethod sampling = SamplingMethod::latin_hypercube;
+  std::uint64_t seed = 1;
+  std::vector<LimitState> limit_states;
+  int bootstrap_replicates = 200;
+  double confidence = 0.95;
+  int block_lanes = 64;
+  double checkpoint_interval = 10.0;  // s of wall time between checkpoints
+
+  std::int64_t realisation_count() const { return realisations_per_stripe * static_cast<std::int64_t>(levels.size()); }
+};
+
+EnsembleSpec load_ensemble(const std::filesystem::path& file);
+
+}  // namespace caskdem

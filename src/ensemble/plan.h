@@ -1,0 +1,87 @@
+#pragma once
+// The plan of an ensemble: the shared model, the motions and their intensities, the
+// restitution -> damping calibration curve, and, for any realisation index, its stripe,
+// motion, scale factor and physical parameters. Everything here is a pure function of the
+// ensemble file, so every thread, block and rank sees the same realisations.
+//
+// Realisation i belongs to stripe s = i / n (n realisations per stripe) at position
+// j = i mod n, and uses motion j mod M (the M motions share each stripe equally). The
+// motion is scaled so that its intensity measure equals the stripe's level.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "ensemble/ensemble_file.h"
+#include "kernels/block.h"
+#include "kernels/model.h"
+#include "model/build.h"
+#include "motion/table_motion.h"
+
+namespace caskdem {
+
+// Free-vibration restitution against damping ratio for the nominal cask, computed once in
+// SIMD lanes (one lane per damping ratio, log-spaced), made monotone by isotonic regression,
+// and its inverse.
+struct CalibrationCurve {
+  std::vector<double> damping_ratio;  // increasing
+  std::vector<double> restitution;    // decreasing
+  double damping_for(double restitution) const;  // linear in (e, ln h); throws std::out_of_range outside
+  double lowest() const { return restitution.back(); }
+  double highest() const { return restitution.front(); }
+};
+
+CalibrationCurve compute_calibration_curve(const Model& model, const ModelSpec& spec,
+                                           const RealisationParameters& nominal, const FreeVibrationSpec& free_vibration,
+                                           InstructionSet isa, int points);
+
+struct MotionIntensity {
+  double pga = 0.0;       // m/s^2
+  double pgv = 0.0;       // m/s
+  double duration = 0.0;  // s (of the motion; runs add the settle time)
+};
+
+struct RealisationInput {
+  std::int64_t index = 0;
+  int stripe = 0;
+  int motion = 0;
+  double level = 0.0;         // the stripe's intensity level
+  double scale_factor = 0.0;  // on the motion's acceleration
+  double restitution = 0.0;   // sampled (0 when restitution is not uncertain)
+  RealisationParameters parameters;
+};
+
+class EnsemblePlan {
+ public:
+  EnsemblePlan(const EnsembleSpec& spec, InstructionSet isa);
+
+  const EnsembleSpec& spec() const { return spec_; }
+  const Model& model() const { return model_; }
+  const ModelSpec& model_spec() const { return model_spec_; }
+  std::int64_t size() const { return spec_.realisation_count(); }
+  int motion_count() const { return static_cast<int>(motions_.size()); }
+  const motion::TableMotion& motion(int m) const { return *motions_[m]; }
+  const MotionIntensity& intensity(int m) const { return intensities_[m]; }
+  double run_duration(int m) const;  // motion duration + settle time
+  const CalibrationCurve& calibration() const { return calibration_; }
+  bool restitution_uncertain() const { return spec_.uncertain.count("restitution") > 0; }
+  double stability_angle() const { return model_.stability_angle; }
+  double frequency_parameter() const { return frequency_parameter_; }  // p of the rigid equivalent
+
+  RealisationInput realisation(std::int64_t index) const;
+  // The motion's intensity (of the scaled motion as applied) for a given scale factor.
+  double intensity_of(int motion, double scale_factor) const;
+
+ private:
+  EnsembleSpec spec_;
+  ModelSpec model_spec_;
+  RealisationParameters nominal_;
+  Model model_;
+  std::vector<std::unique_ptr<motion::TableMotion>> motions_;
+  std::vector<MotionIntensity> intensities_;
+  CalibrationCurve calibration_;
+  Sampler sampler_;
+  double frequency_parameter_ = 0.0;
+};
+
+}  // namespace caskdem

@@ -1,0 +1,231 @@
+#include "ensemble/results.h"
+
+#include <unistd.h>
+
+#include <cmath>
+
+#include "caskdem/build_info.h"
+#include "core/error.h"
+#include "ensemble/analysis.h"
+#include "io/hdf5_file.h"
+
+namespace caskdem {
+
+namespace {
+
+// The per-realisation datasets, named once for writing and reading.
+template <class F>
+void for_each_double(EnsembleResults& r, F&& f) {
+  f("level", r.level, "");
+  f("scale_factor", r.scale_factor, "");
+  f("friction_static", r.friction_static, "");
+  f("friction_kinetic", r.friction_kinetic, "");
+  f("friction_decay_speed", r.friction_decay_speed, "m/s");
+  f("restitution", r.restitution, "");
+  f("damping_ratio", r.damping_ratio, "");
+  f("mass", r.mass, "kg");
+  f("centre_height", r.centre_height, "m");
+  f("max_abs_rotation", r.max_abs_rotation, "rad");
+  f("max_rotation_ratio", r.max_rotation_ratio, "");
+  f("max_abs_slide", r.max_abs_slide, "m");
+  f("residual_slide", r.residual_slide, "m");
+  f("max_uplift", r.max_uplift, "m");
+  f("end_time", r.end_time, "s");
+  f("tip_over_time", r.tip_over_time, "s");
+  f("instability_time", r.instability_time, "s");
+}
+
+template <class F>
+void for_each_integer(EnsembleResults& r, F&& f) {
+  f("stripe", r.stripe);
+  f("motion", r.motion);
+  f("status", r.status);
+  f("impacts", r.impacts);
+}
+
+}  // namespace
+
+EnsembleResults::EnsembleResults(const EnsemblePlan& plan) : size(plan.size()) {
+  const auto n = static_cast<std::size_t>(size);
+  completed.assign(n, 0);
+  for_each_double(*this, [n](const char*, std::vector<double>& v, const char*) { v.assign(n, 0.0); });
+  for_each_integer(*this, [n](const char*, std::vector<std::int64_t>& v) { v.assign(n, 0); });
+  for (std::int64_t i = 0; i < size; ++i) {
+    const RealisationInput in = plan.realisation(i);
+    stripe[i] = in.stripe;
+    motion[i] = in.motion;
+    level[i] = in.level;
+    scale_factor[i] = in.scale_factor;
+    friction_static[i] = in.parameters.friction_static;
+    friction_kinetic[i] = in.parameters.friction_kinetic;
+    friction_decay_speed[i] = in.parameters.friction_decay_speed;
+    restitution[i] = in.restitution;
+    damping_ratio[i] = in.parameters.damping_ratio;
+    mass[i] = in.parameters.mass;
+    centre_height[i] = in.parameters.centre_of_mass.y;
+    tip_over_time[i] = -1.0;
+    instability_time[i] = -1.0;
+  }
+}
+
+void EnsembleResults::record(std::int64_t i, const RealisationOutcome& o, double stability_angle) {
+  completed[i] = 1;
+  status[i] = static_cast<std::int64_t>(o.status);
+  impacts[i] = static_cast<std::int64_t>(o.impacts);
+  max_abs_rotation[i] = o.max_abs_rotation;
+  max_rotation_ratio[i] = o.max_abs_rotation / stability_angle;
+  max_abs_slide[i] = o.max_abs_slide;
+  residual_slide[i] = o.residual_slide;
+  max_uplift[i] = o.max_uplift;
+  end_time[i] = o.end_time;
+  tip_over_time[i] = o.status == LaneStatus::tipped_over ? o.end_time : -1.0;
+  instability_time[i] = o.instability_time;
+}
+
+std::int64_t EnsembleResults::completed_count() const {
+  std::int64_t count = 0;
+  for (std::uint8_t c : completed) count += c;
+  return count;
+}
+
+std::vector<std::int64_t> EnsembleResults::pending() const {
+  std::vector<std::int64_t> indices;
+  for (std::int64_t i = 0; i < size; ++i) {
+    if (!completed[i]) indices.push_back(i);
+  }
+  return indices;
+}
+
+void write_ensemble_file(const std::filesystem::path& file, const EnsemblePlan& plan, const EnsembleResults& results,
+                         const RunInformation& run, const std::vector<LimitStateSummary>* limit_states) {
+  const EnsembleSpec& spec = plan.spec();
+  const std::filesystem::path temporary = file.string() + ".partial-" + std::to_string(::getpid());
+  {
+    hdf5::Group root = hdf5::create_file(temporary);
+    root.attribute("caskdem_version", std::string(build_info::version));
+    root.attribute("ensemble_file", spec.file.string());
+    root.attribute("ensemble_toml", spec.toml_text);
+    root.attribute("title", spec.title);
+    root.attribute("wall_time_s", run.wall_seconds);
+    root.attribute("instruction_set", run.instruction_set);
+    root.attribute("threads", std::int64_t(run.threads));
+    root.attribute("realisations", results.size);
+    root.attribute("completed", results.completed_count());
+    std::int64_t non_finite = 0;
+    for (std::int64_t i = 0; i < results.size; ++i) {
+      non_finite += results.completed[i] && results.status[i] == std::int64_t(LaneStatus::non_finite);
+    }
+    // Realisations that went non-finite count in no stripe; their number is kept here.
+    root.attribute("non_finite", non_finite);
+    root.attribute("time_step_s", plan.model().time_step);
+    root.attribute("stability_angle_rad", plan.stability_angle());
+    root.attribute("frequency_parameter_rad_s", plan.frequency_parameter());
+    root.attribute("intensity_measure", intensity_name(spec.measure));
+    root.attribute("seed", static_cast<std::int64_t>(spec.seed));
+    root.attribute("sampling", std::string(spec.sampling == SamplingMethod::latin_hypercube ? "latin_hypercube" : "monte_carlo"));
+
+    hdf5::Group realisations = root.group("realisations");
+    EnsembleResults& r = const_cast<EnsembleResults&>(results);  // the visitors are shared with reading
+    realisations.write("completed", r.completed);
+    for_each_double(r, [&](const char* name, std::vector<double>& v, const char* units) { realisations.write(name, v, units); });
+    for_each_integer(r, [&](const char* name, std::vector<std::int64_t>& v) { realisations.write(name, v); });
+
+    hdf5::Group motions = root.group("motions");
+    std::vector<double> pga, pgv, duration;
+    for (int m = 0; m < plan.motion_count(); ++m) {
+      pga.push_back(plan.intensity(m).pga);
+      pgv.push_back(plan.intensity(m).pgv);
+      duration.push_back(plan.intensity(m).duration);
+    }
+    motions.write_strings("name", spec.motion_names);
+    motions.write("pga", pga, "m/s^2");
+    motions.write("pgv", pgv, "m/s");
+    motions.write("duration", duration, "s");
+
+    hdf5::Group stripes = root.group("stripes");
+    stripes.write("level", spec.levels, intensity_name(spec.measure));
+
+    if (plan.restitution_uncertain()) {
+      hdf5::Group calibration = root.group("calibration");
+      calibration.write("damping_ratio", plan.calibration().damping_ratio);
+      calibration.write("restitution", plan.calibration().restitution);
+    }
+
+    if (limit_states) {
+      hdf5::Group all = root.group("limit_states");
+      for (const LimitStateSummary& s : *limit_states) {
+        hdf5::Group g = all.group(s.limit_state.name);
+        g.attribute("kind", std::string(s.limit_state.kind == LimitState::Kind::tip_over         ? "tip_over"
+                                        : s.limit_state.kind == LimitState::Kind::rotation_ratio ? "rotation_ratio"
+                                                                                                 : "sliding"));
+        g.attribute("threshold", s.limit_state.threshold);
+        std::vector<double> level, probability, lower, upper;
+        std::vector<std::int64_t> trials, count;
+        for (const auto& p : s.stripes) {
+          level.push_back(p.level);
+          trials.push_back(p.trials);
+          count.push_back(p.count);
+          probability.push_back(p.probability);
+          lower.push_back(p.lower);
+          upper.push_back(p.upper);
+        }
+        g.write("level", level);
+        g.write("trials", trials);
+        g.write("count", count);
+        g.write("probability", probability);
+        g.write("probability_lower", lower);
+        g.write("probability_upper", upper);
+        g.attribute("fitted", std::int64_t(s.fit.fitted));
+        if (s.fit.fitted) {
+          g.attribute("median", s.fit.median);
+          g.attribute("log_std", s.fit.log_std);
+          g.attribute("log_likelihood", s.fit.log_likelihood);
+          g.attribute("misfit_max_abs_difference", s.misfit.max_abs_difference);
+          g.attribute("misfit_stripes_outside_interval", std::int64_t(s.misfit.stripes_outside_interval));
+          // A fit whose probability underflows to exactly 0 or 1 where data disagree has an
+          // infinite chi-square; the file holds the largest double instead (p-value 0).
+          g.attribute("misfit_chi_square", std::isfinite(s.misfit.chi_square) ? s.misfit.chi_square : 1.7976931348623157e308);
+          g.attribute("misfit_degrees_of_freedom", std::int64_t(s.misfit.degrees_of_freedom));
+          g.attribute("misfit_p_value", s.misfit.p_value);
+          g.write("band_im", s.band.im);
+          g.write("band_lower", s.band.lower);
+          g.write("band_upper", s.band.upper);
+          g.attribute("band_replicates", std::int64_t(s.band.replicates));
+          g.attribute("band_failed_replicates", std::int64_t(s.band.failed_replicates));
+          g.attribute("band_resampled", s.band.resampled);
+        } else {
+          g.attribute("not_fitted_because", s.fit.reason);
+        }
+      }
+    }
+  }
+  std::filesystem::rename(temporary, file);
+}
+
+EnsembleResults read_ensemble_results(const std::filesystem::path& file, const EnsemblePlan& plan, double* wall_seconds) {
+  EnsembleResults results(plan);
+  try {
+    hdf5::Group root = hdf5::open_file(file);
+    if (root.string_attribute("ensemble_toml") != plan.spec().toml_text) {
+      throw InputError(located(file, 0, "was written for a different ensemble file (or the file has changed since): "
+                                        "cannot resume it with " + plan.spec().file.string()));
+    }
+    if (root.integer_attribute("realisations") != results.size) {
+      throw InputError(located(file, 0, "holds a different number of realisations: cannot resume"));
+    }
+    if (wall_seconds) *wall_seconds = root.double_attribute("wall_time_s");
+    hdf5::Group realisations = root.open_group("realisations");
+    results.completed = realisations.read_bytes("completed");
+    for_each_double(results, [&](const char* name, std::vector<double>& v, const char*) { v = realisations.read_doubles(name); });
+    for_each_integer(results, [&](const char* name, std::vector<std::int64_t>& v) { v = realisations.read_integers(name); });
+    for (const auto* v : {&results.level, &results.max_abs_rotation}) {
+      if (static_cast<std::int64_t>(v->size()) != results.size) throw InputError(located(file, 0, "is truncated"));
+    }
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const InputError*>(&e)) throw;
+    throw InputError(located(file, 0, std::string("cannot resume from it: ") + e.what()));
+  }
+  return results;
+}
+
+}  // namespace caskdem
