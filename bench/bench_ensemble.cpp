@@ -1,0 +1,47 @@
+// End to end: an ensemble file in, the fragility file out, on every core. The default is
+// the yardstick, 10,000 realisations of the 1/3 model cask under a 20 s record at
+// f_s = 0.01 (ensembles/benchmark-1-3-elcentro-20s.toml); CASKDEM_BENCH_ENSEMBLE names
+// another file. One iteration: it takes minutes.
+
+#include <omp.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+#include <benchmark/benchmark.h>
+
+#include "ensemble/execute.h"
+
+namespace caskdem::bench {
+namespace {
+
+void end_to_end(benchmark::State& state) {
+  const char* chosen = std::getenv("CASKDEM_BENCH_ENSEMBLE");
+  const std::string file = chosen ? chosen : std::string(CASKDEM_SOURCE_DIR) + "/ensembles/benchmark-1-3-elcentro-20s.toml";
+  const EnsembleSpec spec = load_ensemble(file);
+  double lane_steps = 0.0;
+  for (auto _ : state) {
+    const EnsemblePlan plan(spec, InstructionSet::automatic);
+    ExecuteOptions options;
+    options.threads = static_cast<int>(state.range(0));
+    options.progress = false;
+    options.output = std::filesystem::temp_directory_path() / "caskdem-bench-ensemble.h5";
+    const ExecuteReport report = execute_ensemble(plan, options);
+    benchmark::DoNotOptimize(report.limit_states.data());
+    for (int m = 0; m < plan.motion_count(); ++m) {
+      lane_steps += double(plan.size()) / plan.motion_count() * std::ceil(plan.run_duration(m) / plan.model().time_step);
+    }
+  }
+  state.counters["realisations"] = double(spec.realisation_count());
+  state.counters["realisations_per_s"] = benchmark::Counter(double(spec.realisation_count()) * state.iterations(), benchmark::Counter::kIsRate);
+  // Scheduled work: lanes that tip over stop early, so the kernel does less than this.
+  state.counters["scheduled_lane_steps_per_s"] = benchmark::Counter(lane_steps, benchmark::Counter::kIsRate);
+}
+
+}  // namespace
+
+BENCHMARK(end_to_end)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+
+}  // namespace caskdem::bench
+
+BENCHMARK_MAIN();

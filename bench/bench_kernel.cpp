@@ -1,0 +1,155 @@
+// Kernel throughput in realisation-steps per second: per instruction set and friction law,
+// on one thread and two, against the scalar deterministic code on the same work; the flops a
+// realisation-step costs (counted by running the step on a counting number type) and the
+// fraction of the machine's peak.
+
+#include "bench/counted.h"  // before the kernels, so their templates see its overloads
+
+#include <omp.h>
+
+#include <benchmark/benchmark.h>
+
+#include "bench/bench_common.h"
+#include "kernels/step.h"
+#include "sim/simulate.h"
+
+namespace caskdem::bench {
+namespace {
+
+constexpr int kSteps = 20000;
+constexpr int kLanes = 64;
+
+// Operations of one realisation-step, averaged over a rocking history.
+lane::OperationCount count_operations(FrictionLaw law) {
+  const Case c = paper_model(law);
+  const Model model = build_model(c.model, c.parameters);
+  const LaneParameters<double> p = lane_parameters(model, c.parameters);
+  LaneParameters<lane::Counted> parameters;
+  {
+    LaneParameters<double> copy = p;
+    double values[LaneParameters<double>::field_count];
+    int i = 0;
+    copy.for_each_field([&](double& v) { values[i++] = v; });
+    i = 0;
+    parameters.for_each_field([&](lane::Counted& v) { v = lane::Counted(values[i++]); });
+  }
+  const BodyState<double> rest = rest_state(model, p);
+  BodyState<lane::Counted> body{lane::Counted(rest.x), lane::Counted(rest.y), lane::Counted(rest.theta),
+                                lane::Counted(rest.vx), lane::Counted(rest.vy), lane::Counted(rest.omega)};
+  CornerState<lane::Counted> corners[kMaxCorners];
+  Response<lane::Counted> response;
+  response.for_each_field([](lane::Counted& v) { v = lane::Counted(0.0); });
+  response.instability_time = lane::Counted(-1.0);
+  const std::vector<double> table = table_acceleration(model.time_step, kSteps);
+  lane::operation_count() = {};
+  auto run = [&](auto law_tag) {
+    for (int n = 0; n < kSteps; ++n) {
+      kernels::step<decltype(law_tag)::value>(model, parameters, table[n], 0.0, n * model.time_step, body, corners, response);
+    }
+  };
+  switch (law) {
+    case FrictionLaw::constant: run(std::integral_constant<FrictionLaw, FrictionLaw::constant>{}); break;
+    case FrictionLaw::static_kinetic: run(std::integral_constant<FrictionLaw, FrictionLaw::static_kinetic>{}); break;
+    case FrictionLaw::exponential: run(std::integral_constant<FrictionLaw, FrictionLaw::exponential>{}); break;
+    case FrictionLaw::tabulated: run(std::integral_constant<FrictionLaw, FrictionLaw::tabulated>{}); break;
+  }
+  lane::OperationCount total = lane::operation_count();
+  return {total.flops / kSteps, total.other / kSteps};
+}
+
+// Peak double-precision flops per second of one core: two FMA pipes, each a vector of
+// `width` doubles doing a multiply and an add per cycle.
+double core_peak(int width) { return 2.0 * width * 2.0 * reported_clock_mhz() * 1e6; }
+
+int width_of(InstructionSet isa) {
+  switch (isa) {
+    case InstructionSet::avx512f: return 8;
+    case InstructionSet::avx2: return 4;
+    case InstructionSet::sse2: return 2;
+    default: return 1;
+  }
+}
+
+void kernel(benchmark::State& state, InstructionSet isa, FrictionLaw law) {
+  if (!instruction_set_available(isa)) {
+    state.SkipWithError((instruction_set_name(isa) + " is not available on this machine").c_str());
+    return;
+  }
+  const Case c = paper_model(law);
+  const Model model = build_model(c.model, c.parameters);
+  const std::vector<double> table = table_acceleration(model.time_step, kSteps);
+  const std::vector<double> still(kSteps, 0.0);
+  const lane::OperationCount operations = count_operations(law);
+  for (auto _ : state) {
+    state.PauseTiming();
+    LaneBlock block = make_block(model, c.parameters, kLanes);
+    state.ResumeTiming();
+    advance_block(isa, model, block, table.data(), still.data(), 0, kSteps);
+    benchmark::DoNotOptimize(block.view().body);
+  }
+  const double lane_steps = double(kLanes) * kSteps * state.iterations();
+  state.counters["lane_steps_per_s"] = benchmark::Counter(lane_steps, benchmark::Counter::kIsRate);
+  state.counters["flops_per_lane_step"] = double(operations.flops);
+  state.counters["other_ops_per_lane_step"] = double(operations.other);
+  state.counters["fraction_of_core_peak"] =
+      benchmark::Counter(lane_steps * operations.flops / core_peak(width_of(isa)), benchmark::Counter::kIsRate);
+}
+
+// The scalar deterministic code (the reference path, with its time-history bookkeeping off)
+// on the same work: one realisation after another.
+void deterministic(benchmark::State& state, FrictionLaw law) {
+  const Case c = paper_model(law);
+  const Model model = build_model(c.model, c.parameters);
+  const LaneParameters<double> lane = lane_parameters(model, c.parameters);
+  const std::vector<double> table = table_acceleration(model.time_step, kSteps);
+  for (auto _ : state) {
+    BodyState<double> body = rest_state(model, lane);
+    CornerState<double> corners[kMaxCorners] = {};
+    Response<double> response = initial_response(lane, body);
+    for (int n = 0; n < kSteps; ++n) {
+      kernels::step<FrictionLaw::exponential>(model, lane, table[n], 0.0, n * model.time_step, body, corners, response);
+    }
+    benchmark::DoNotOptimize(response);
+  }
+  state.counters["lane_steps_per_s"] = benchmark::Counter(double(kSteps) * state.iterations(), benchmark::Counter::kIsRate);
+}
+
+// Threads: each benchmark thread advances its own block, as the ensemble's OpenMP threads do.
+void threads(benchmark::State& state) {
+  const Case c = paper_model(FrictionLaw::exponential);
+  const Model model = build_model(c.model, c.parameters);
+  const std::vector<double> table = table_acceleration(model.time_step, kSteps);
+  const std::vector<double> still(kSteps, 0.0);
+  for (auto _ : state) {
+    state.PauseTiming();
+    LaneBlock block = make_block(model, c.parameters, kLanes);
+    state.ResumeTiming();
+    advance_block(InstructionSet::automatic, model, block, table.data(), still.data(), 0, kSteps);
+    benchmark::DoNotOptimize(block.view().body);
+  }
+  state.counters["lane_steps_per_s"] = benchmark::Counter(double(kLanes) * kSteps * state.iterations(), benchmark::Counter::kIsRate);
+}
+
+}  // namespace
+
+BENCHMARK_CAPTURE(kernel, scalar_exponential, InstructionSet::scalar, FrictionLaw::exponential)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(kernel, sse2_exponential, InstructionSet::sse2, FrictionLaw::exponential)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(kernel, avx2_exponential, InstructionSet::avx2, FrictionLaw::exponential)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(kernel, avx512f_exponential, InstructionSet::avx512f, FrictionLaw::exponential)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(kernel, scalar_constant, InstructionSet::scalar, FrictionLaw::constant)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(kernel, sse2_constant, InstructionSet::sse2, FrictionLaw::constant)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(kernel, avx2_constant, InstructionSet::avx2, FrictionLaw::constant)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(kernel, avx512f_constant, InstructionSet::avx512f, FrictionLaw::constant)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(deterministic, exponential, FrictionLaw::exponential)->Unit(benchmark::kMillisecond);
+BENCHMARK(threads)->Threads(1)->Threads(2)->UseRealTime()->Unit(benchmark::kMillisecond);
+
+}  // namespace caskdem::bench
+
+int main(int argc, char** argv) {
+  benchmark::Initialize(&argc, argv);
+  benchmark::AddCustomContext("cpu_mhz_reported", std::to_string(caskdem::bench::reported_clock_mhz()));
+  benchmark::AddCustomContext("best_instruction_set", caskdem::instruction_set_name(caskdem::best_instruction_set()));
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
