@@ -190,7 +190,7 @@ void read_limits(TableReader& root, Case& c) {
 MotionSpec read_motion(TableReader& t) {
   MotionSpec m;
   m.where = t.file().string() + ":" + std::to_string(t.line_of("kind"));
-  const std::string kind = t.choice("kind", {"sine", "pulse", "record", "none"});
+  const std::string kind = t.choice("kind", {"sine", "pulse", "record", "synthetic", "none"});
   if (kind == "none") {
     m.kind = MotionSpec::Kind::none;
   } else if (kind == "sine") {
@@ -207,6 +207,23 @@ MotionSpec read_motion(TableReader& t) {
     m.pulse_amplitude = t.quantity("amplitude", Dimension::acceleration);
     if (m.pulse_amplitude == 0.0) t.fail("amplitude", "expected a non-zero acceleration");
     m.pulse_duration = t.positive("duration", t.quantity("duration", Dimension::time));
+  } else if (kind == "synthetic") {
+    m.kind = MotionSpec::Kind::synthetic;
+    motion::SyntheticMotion& s = m.synthetic;
+    const std::optional<long> seed = t.optional_integer("seed");
+    if (seed && *seed < 0) t.fail("seed", "expected a non-negative whole number");
+    s.seed = static_cast<std::uint64_t>(seed.value_or(1));
+    s.duration = t.positive("duration", t.quantity_or("duration", Dimension::time, s.duration));
+    s.time_step = t.positive("time_step", t.quantity_or("time_step", Dimension::time, s.time_step));
+    s.dominant_frequency = t.positive("dominant_frequency", t.quantity_or("dominant_frequency", Dimension::frequency, s.dominant_frequency));
+    s.ground_damping = t.positive("ground_damping", t.quantity_or("ground_damping", Dimension::dimensionless, s.ground_damping));
+    s.high_pass_frequency = t.positive("high_pass_frequency", t.quantity_or("high_pass_frequency", Dimension::frequency, s.high_pass_frequency));
+    s.high_pass_damping = t.positive("high_pass_damping", t.quantity_or("high_pass_damping", Dimension::dimensionless, s.high_pass_damping));
+    s.rise_time = t.positive("rise_time", t.quantity_or("rise_time", Dimension::time, s.rise_time));
+    s.strong_duration = t.non_negative("strong_duration", t.quantity_or("strong_duration", Dimension::time, s.strong_duration));
+    s.decay = t.positive("decay", t.quantity_or("decay", Dimension::frequency, s.decay));
+    s.pga = t.positive("pga", t.quantity_or("pga", Dimension::acceleration, s.pga));
+    if (!(s.high_pass_frequency < s.dominant_frequency)) t.fail("high_pass_frequency", "expected a frequency below dominant_frequency");
   } else {
     m.kind = MotionSpec::Kind::record;
     m.file = resolve_beside(t.file(), t.string("file"));
@@ -246,8 +263,10 @@ std::unique_ptr<motion::TableMotion> make_motion(const MotionSpec& spec) {
                                spec.ramp_cycles);
     case MotionSpec::Kind::pulse:
       return motion::make_pulse(spec.shape, spec.pulse_amplitude, spec.pulse_duration * time_factor);
+    case MotionSpec::Kind::synthetic:
     case MotionSpec::Kind::record: {
-      motion::Record record = motion::read_record(spec.file, spec.read);
+      motion::Record record = spec.kind == MotionSpec::Kind::synthetic ? motion::synthetic_record(spec.synthetic)
+                                                                         : motion::read_record(spec.file, spec.read);
       try {
         if (spec.scaling == MotionSpec::Scaling::target_pga) record = motion::scaled_to_pga(record, spec.scale);
         else if (spec.scaling == MotionSpec::Scaling::target_pgv) record = motion::scaled_to_pgv(record, spec.scale);

@@ -11,12 +11,13 @@
 #include "casefile/toml_reader.h"
 #include "model/build.h"
 #include "motion/record.h"
+#include "motion/synthetic.h"
 #include "motion/table_motion.h"
 
 namespace caskdem {
 
 struct MotionSpec {
-  enum class Kind { none, sine, pulse, record };
+  enum class Kind { none, sine, pulse, record, synthetic };
   enum class Scaling { factor, target_pga, target_pgv };
   Kind kind = Kind::none;
   // sine
@@ -31,6 +32,8 @@ struct MotionSpec {
   // record
   std::filesystem::path file;
   motion::ReadOptions read;
+  // synthetic (a Kanai-Tajimi accelerogram generated from a seed; then treated as a record)
+  motion::SyntheticMotion synthetic;
   Scaling scaling = Scaling::factor;
   double scale = 1.0;            // factor, or target PGA (m/s^2) / PGV (m/s)
   double similarity_scale = 1.0; // N: a prototype motion applied to a 1/N model (time / sqrt(N))

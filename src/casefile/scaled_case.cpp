@@ -17,6 +17,7 @@ MotionSpec scaled_motion(MotionSpec m, double n) {
     case MotionSpec::Kind::pulse:
       m.pulse_duration *= time;  // accelerations are unchanged
       break;
+    case MotionSpec::Kind::synthetic:
     case MotionSpec::Kind::record:
       // PGA targets and factors are accelerations (ratio 1); a PGV target applies to the
       // record before its time compression, so it stays as it is too.
