@@ -11,6 +11,13 @@
 #include "core/error.h"
 #include "core/units.h"
 #include "ensemble/execute.h"
+#ifdef CASKDEM_WITH_MPI
+#include "ensemble/distributed.h"
+#else
+namespace caskdem {
+class MpiSession;  // ensembles run in one process without MPI
+}
+#endif
 #include "io/run_output.h"
 
 namespace caskdem::commands {
@@ -28,15 +35,77 @@ std::string format_level(IntensityMeasure measure, double value) {
   return out.str();
 }
 
+struct EnsembleOptions {
+  std::string file, out, isa = "automatic";
+  int threads = 0;
+  bool resume = false, no_plot = false, quiet = false;
+};
+// One process, or one rank of an MPI job (mpi not null): only rank 0 reports and plots.
+void run_ensemble_command(const EnsembleOptions& options, const MpiSession* mpi) {
+  const EnsembleSpec spec = load_ensemble(options.file);
+  InstructionSet isa;
+  try {
+    isa = parse_instruction_set(options.isa);
+  } catch (const std::invalid_argument& e) {
+    throw InputError(std::string("--isa: ") + e.what());
+  }
+  const std::filesystem::path out =
+      options.out.empty() ? std::filesystem::path("results") / (spec.name + ".h5") : std::filesystem::path(options.out);
+  bool root = true;
+#ifdef CASKDEM_WITH_MPI
+  if (mpi) root = mpi->rank() == 0;
+#endif
+  if (root && out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
+  if (options.resume && !std::filesystem::exists(out)) {
+    throw InputError(out.string() + ": no such file to resume (run without --resume first)");
+  }
+  const EnsemblePlan plan(spec, isa);
+  if (root) {
+    std::cout << "ensemble        " << spec.title << "\n";
+    std::cout << "realisations    " << plan.size() << " (" << spec.levels.size() << " stripes x "
+              << spec.realisations_per_stripe << ", " << plan.motion_count() << " motions)\n";
+    std::cout << "time step       " << plan.model().time_step << " s, alpha " << plan.stability_angle() << " rad\n";
+#ifdef CASKDEM_WITH_MPI
+    if (mpi) std::cout << "MPI             " << mpi->size() << " ranks\n";
+#endif
+    std::cout.flush();
+  }
+  ExecuteOptions execute;
+  execute.isa = isa;
+  execute.threads = options.threads;
+  execute.resume = options.resume;
+  execute.progress = !options.quiet;
+  execute.output = out;
+#ifdef CASKDEM_WITH_MPI
+  const ExecuteReport report = mpi ? execute_ensemble_distributed(plan, execute, *mpi) : execute_ensemble(plan, execute);
+#else
+  const ExecuteReport report = execute_ensemble(plan, execute);
+#endif
+  if (!root) return;
+  std::cout << std::setprecision(4) << "wall time       " << report.wall_seconds << " s (" << report.realisations_run
+            << " realisations in this run)\n";
+  for (const LimitStateSummary& s : report.limit_states) {
+    std::cout << std::left << std::setw(20) << s.limit_state.name;
+    if (s.fit.fitted) {
+      std::cout << "median " << format_level(spec.measure, s.fit.median) << ", log-std " << s.fit.log_std
+                << " (max misfit " << s.misfit.max_abs_difference << ", chi-square p " << s.misfit.p_value << ")\n";
+    } else {
+      std::cout << "no curve: " << s.fit.reason << "\n";
+    }
+  }
+  std::cout << "wrote           " << out.string() << "\n";
+  if (!options.no_plot) {
+    std::filesystem::path png = out;
+    png.replace_extension(".png");
+    run_plot_script("plot_fragility.py", {out.string(), png.string()});
+    std::cout << "wrote           " << png.string() << "\n";
+  }
+}
+
 }  // namespace
 
 void add_ensemble(CLI::App& app) {
-  struct Options {
-    std::string file, out, isa = "automatic";
-    int threads = 0;
-    bool resume = false, no_plot = false, quiet = false;
-  };
-  auto options = std::make_shared<Options>();
+  auto options = std::make_shared<EnsembleOptions>();
   CLI::App* cmd = app.add_subcommand("ensemble", "Run an ensemble: realisations, stripe probabilities, fragility curves");
   cmd->add_option("file", options->file, "Ensemble file (TOML)")->required();
   cmd->add_option("--out", options->out, "Result file (HDF5; default results/<name>.h5)");
@@ -46,49 +115,19 @@ void add_ensemble(CLI::App& app) {
   cmd->add_flag("--no-plot", options->no_plot, "Do not make the PNG");
   cmd->add_flag("--quiet", options->quiet, "No progress output");
   cmd->callback([options]() {
-    const EnsembleSpec spec = load_ensemble(options->file);
-    InstructionSet isa;
-    try {
-      isa = parse_instruction_set(options->isa);
-    } catch (const std::invalid_argument& e) {
-      throw InputError(std::string("--isa: ") + e.what());
-    }
-    const std::filesystem::path out =
-        options->out.empty() ? std::filesystem::path("results") / (spec.name + ".h5") : std::filesystem::path(options->out);
-    if (out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
-    if (options->resume && !std::filesystem::exists(out)) {
-      throw InputError(out.string() + ": no such file to resume (run without --resume first)");
-    }
-    const EnsemblePlan plan(spec, isa);
-    std::cout << "ensemble        " << spec.title << "\n";
-    std::cout << "realisations    " << plan.size() << " (" << spec.levels.size() << " stripes x "
-              << spec.realisations_per_stripe << ", " << plan.motion_count() << " motions)\n";
-    std::cout << "time step       " << plan.model().time_step << " s, alpha " << plan.stability_angle() << " rad\n";
-    ExecuteOptions execute;
-    execute.isa = isa;
-    execute.threads = options->threads;
-    execute.resume = options->resume;
-    execute.progress = !options->quiet;
-    execute.output = out;
-    const ExecuteReport report = execute_ensemble(plan, execute);
-    std::cout << std::setprecision(4) << "wall time       " << report.wall_seconds << " s (" << report.realisations_run
-              << " realisations in this run)\n";
-    for (const LimitStateSummary& s : report.limit_states) {
-      std::cout << std::left << std::setw(16) << s.limit_state.name;
-      if (s.fit.fitted) {
-        std::cout << "median " << format_level(spec.measure, s.fit.median) << ", log-std " << s.fit.log_std
-                  << " (max misfit " << s.misfit.max_abs_difference << ", chi-square p " << s.misfit.p_value << ")\n";
-      } else {
-        std::cout << "no curve: " << s.fit.reason << "\n";
+#ifdef CASKDEM_WITH_MPI
+    if (launched_by_mpi()) {
+      const MpiSession mpi(nullptr, nullptr);
+      try {
+        run_ensemble_command(*options, &mpi);
+      } catch (const InputError&) {
+        // Every rank reads the same files and fails alike: one message, from rank 0.
+        if (mpi.rank() == 0) throw;
       }
+      return;
     }
-    std::cout << "wrote           " << out.string() << "\n";
-    if (!options->no_plot) {
-      std::filesystem::path png = out;
-      png.replace_extension(".png");
-      run_plot_script("plot_fragility.py", {out.string(), png.string()});
-      std::cout << "wrote           " << png.string() << "\n";
-    }
+#endif
+    run_ensemble_command(*options, nullptr);
   });
 }
 

@@ -1,0 +1,158 @@
+#include "ensemble/distributed.h"
+
+#include <mpi.h>
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+
+#include "ensemble/progress.h"
+#include "ensemble/runner.h"
+
+namespace caskdem {
+
+namespace {
+
+constexpr int kOutcomeFields = 9;  // index + the 8 fields of RealisationOutcome
+
+void pack(std::int64_t index, const RealisationOutcome& o, std::vector<double>& out) {
+  out.insert(out.end(), {double(index), double(o.status), o.max_abs_rotation, o.max_abs_slide, o.residual_slide,
+                         o.max_uplift, o.impacts, o.end_time, o.instability_time});
+}
+
+RealisationOutcome unpack(const double* p, std::int64_t* index) {
+  *index = static_cast<std::int64_t>(p[0]);
+  RealisationOutcome o;
+  o.status = static_cast<LaneStatus>(static_cast<int>(p[1]));
+  o.max_abs_rotation = p[2];
+  o.max_abs_slide = p[3];
+  o.residual_slide = p[4];
+  o.max_uplift = p[5];
+  o.impacts = p[6];
+  o.end_time = p[7];
+  o.instability_time = p[8];
+  return o;
+}
+
+}  // namespace
+
+bool launched_by_mpi() {
+  for (const char* variable : {"OMPI_COMM_WORLD_SIZE", "PMIX_RANK", "PMI_SIZE", "PMI_RANK", "MPI_LOCALNRANKS"}) {
+    if (std::getenv(variable)) return true;
+  }
+  return false;
+}
+
+MpiSession::MpiSession(int* argc, char*** argv) {
+  int provided = 0;
+  // Outcomes reach MPI from whichever OpenMP thread finished a block, one call at a time.
+  MPI_Init_thread(argc, argv, MPI_THREAD_SERIALIZED, &provided);
+  MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
+  MPI_Comm_size(MPI_COMM_WORLD, &size_);
+}
+
+MpiSession::~MpiSession() { MPI_Finalize(); }
+
+void MpiSession::abort(const std::string& message) const {
+  std::fprintf(stderr, "caskdem: rank %d of %d: error: %s\n", rank_, size_, message.c_str());
+  std::fflush(stderr);
+  MPI_Abort(MPI_COMM_WORLD, 1);
+  std::abort();
+}
+
+ExecuteReport execute_ensemble_distributed(const EnsemblePlan& plan, const ExecuteOptions& options, const MpiSession& mpi) {
+  const auto start = std::chrono::steady_clock::now();
+  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
+  const bool root = mpi.rank() == 0;
+  double earlier_wall = 0.0;
+  // Every rank reads the checkpoint itself, so all agree on what is left to do.
+  EnsembleResults results = options.resume ? read_ensemble_results(options.output, plan, &earlier_wall)
+                                           : EnsembleResults(plan);
+  RunInformation run;
+  run.instruction_set = instruction_set_name(options.isa == InstructionSet::automatic ? best_instruction_set() : options.isa);
+  run.threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  auto checkpoint = [&](const std::vector<LimitStateSummary>* summaries) {
+    run.wall_seconds = earlier_wall + elapsed();
+    write_ensemble_file(options.output, plan, results, run, summaries);
+  };
+  if (root) checkpoint(nullptr);
+
+  // Contiguous slices, one per rank, of the pending realisations taken stripe by stripe in
+  // turn (position 0 of every stripe, then position 1, ...): slices of the plain index order
+  // would give one rank the weak stripes and another the strong ones, whose casks tip over
+  // early and cost less, and the first would keep the others waiting.
+  std::vector<std::int64_t> pending = results.pending();
+  const std::int64_t per_stripe = plan.spec().realisations_per_stripe;
+  std::stable_sort(pending.begin(), pending.end(), [per_stripe](std::int64_t a, std::int64_t b) {
+    return a % per_stripe < b % per_stripe;
+  });
+  const auto total = static_cast<std::int64_t>(pending.size());
+  const std::int64_t first = total * mpi.rank() / mpi.size();
+  const std::int64_t last = total * (mpi.rank() + 1) / mpi.size();
+  std::vector<std::int64_t> mine(pending.begin() + first, pending.begin() + last);
+  // Within a rank, blocks of neighbouring indices (one stripe) again: lanes of one intensity
+  // tip over together, so whole batches stop early.
+  std::sort(mine.begin(), mine.end());
+  const std::vector<WorkBlock> blocks = make_blocks(plan, mine, plan.spec().block_lanes);
+
+  // Rounds of a few blocks per thread: enough work between gathers to keep every thread busy,
+  // often enough for progress and checkpoints.
+  const int per_round = 4 * run.threads;
+  int rounds = static_cast<int>((blocks.size() + per_round - 1) / per_round);
+  MPI_Allreduce(MPI_IN_PLACE, &rounds, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+
+  Progress progress(results.size, results.completed_count(), root && options.progress);
+  double last_checkpoint = elapsed();
+  ExecuteReport report;
+  std::vector<int> counts(mpi.size()), displacements(mpi.size());
+  for (int round = 0; round < rounds; ++round) {
+    const std::size_t begin = std::min(blocks.size(), static_cast<std::size_t>(round) * per_round);
+    const std::size_t end = std::min(blocks.size(), begin + per_round);
+    const std::vector<WorkBlock> these(blocks.begin() + begin, blocks.begin() + end);
+    std::vector<double> packed;
+    try {
+      run_blocks(plan, these, options.isa, run.threads,
+                 [&](const WorkBlock& block, const std::vector<RealisationOutcome>& outcomes) {
+                   for (std::size_t l = 0; l < block.indices.size(); ++l) pack(block.indices[l], outcomes[l], packed);
+                 });
+    } catch (const std::exception& e) {
+      mpi.abort(e.what());
+    }
+    int count = static_cast<int>(packed.size());
+    MPI_Gather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, MPI_COMM_WORLD);
+    std::vector<double> gathered;
+    if (root) {
+      int offset = 0;
+      for (int r = 0; r < mpi.size(); ++r) {
+        displacements[r] = offset;
+        offset += counts[r];
+      }
+      gathered.resize(offset);
+    }
+    MPI_Gatherv(packed.data(), count, MPI_DOUBLE, gathered.data(), counts.data(), displacements.data(), MPI_DOUBLE, 0,
+                MPI_COMM_WORLD);
+    if (!root) continue;
+    for (std::size_t k = 0; k < gathered.size(); k += kOutcomeFields) {
+      std::int64_t index = 0;
+      const RealisationOutcome o = unpack(&gathered[k], &index);
+      results.record(index, o, plan.stability_angle());
+      ++report.realisations_run;
+    }
+    progress.update(results.completed_count());
+    if (elapsed() - last_checkpoint >= plan.spec().checkpoint_interval) {
+      checkpoint(nullptr);
+      last_checkpoint = elapsed();
+    }
+  }
+  if (root) {
+    progress.finish();
+    report.limit_states = analyse(plan, results);
+    checkpoint(&report.limit_states);
+    report.wall_seconds = run.wall_seconds;
+  }
+  return report;
+}
+
+}  // namespace caskdem
