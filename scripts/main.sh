@@ -5,4 +5,5 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCASKDEM_BUILD_TESTS=OFF -DCASKDEM_BUILD_BENCHMARKS=OFF >/dev/null
 cmake --build build -j"$(nproc)" --target caskdem
-build/src/caskdem run cases/default-pulse.toml --out results/default-pulse
+# A fragility analysis on built-in synthetic earthquakes (no downloaded file): results/*.h5 and *.png
+build/src/caskdem ensemble ensembles/model-1-3-builtin.toml --out results/model-1-3-builtin.h5
