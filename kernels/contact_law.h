@@ -8,6 +8,15 @@
 //
 //   overlap        d = max(0, r - y_c),  y_c the height of the arc centre
 //   normal force   F_n = max(0, K_n d - beta K_n v_n)        no tension, dashpot included
+//
+// Two refinements, both off by default (src/diagnosis/mechanisms.h uses them):
+//   soft floor layer  the spring is K_n (s min(d, d0) + max(d - d0, 0)): a layer of stiffness
+//                     s K_n over the first d0 of overlap (a grout bed, a rough or worn surface)
+//   impact damper     -lambda K_n d v_n added to the normal force (Hunt & Crossley 1975,
+//                     J. Appl. Mech. 42(2)): its energy loss per impact grows with the impact
+//                     speed, so the restitution falls with it, e ~ 1 - (2/3) lambda v for a
+//                     point impact; a rocking impact's cannot fall below the plastic impact's
+//                     1 - 2 m R^2 sin^2(alpha) / I_O (Housner 1963)
 //   shear spring   F_s* = F_s(previous) - K_s v_s dt         incremental: the spring stretches by the slip
 //   Coulomb        slipping if |F_s*| > mu F_n; then the spring force is mu F_n sign(F_s*)
 //   shear dashpot  -beta K_s v_s while the contact sticks; a slipping contact transmits
@@ -46,8 +55,12 @@ inline CornerContact<T> corner_contact(const Model& model, const LaneParameters<
 
   const auto touching = gap < zero;
   const T overlap = select(touching, -gap, zero);
-  // No tension: the spring and the dashpot together may push but never pull.
-  const T normal_force = select(touching, lane::max(normal_stiffness * overlap - beta * normal_stiffness * normal_velocity, zero), zero);
+  const T layer = lane_parameters.floor_soft_depth;
+  const T spring_force = normal_stiffness * (lane_parameters.floor_soft_ratio * lane::min(overlap, layer) +
+                                             lane::max(overlap - layer, zero));
+  const T damping_force = (beta + lane_parameters.impact_damping * overlap) * normal_stiffness * normal_velocity;
+  // No tension: the spring and the dashpots together may push but never pull.
+  const T normal_force = select(touching, lane::max(spring_force - damping_force, zero), zero);
 
   const auto was_slipping = previous.slipping > broadcast<T>(0.5);
   const T mu = friction_coefficient<Law>(model, lane_parameters, lane::abs(slip_velocity), was_slipping);

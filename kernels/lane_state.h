@@ -21,13 +21,21 @@ struct LaneParameters {
   T horizontal_scale;      // factor on the horizontal table acceleration
   T vertical_scale;        // factor on the vertical table acceleration
   T stiffness_scale;       // factor on every contact spring constant
+  // Mechanisms beyond the source paper's model (src/diagnosis/mechanisms.h); zero, or one
+  // for floor_soft_ratio, leaves the paper's model.
+  T impact_damping;        // lambda, s/m: Hunt-Crossley damper -lambda K d v_n, loss growing with impact speed
+  T floor_soft_ratio;      // s: a floor layer of stiffness s K over the first floor_soft_depth of overlap
+  T floor_soft_depth;      // d0, m
+  T base_camber;           // c, m: the base-centre corner (Model::camber_corner) sits c below the base corners
+  T wobble_damping;        // zeta_w: rocking damper -2 zeta_w p (|theta|/alpha) omega, out-of-plane losses
 
   template <class F>
   void for_each_field(F&& f) {
     f(inverse_mass); f(inverse_inertia); f(centre_x); f(centre_y); f(friction_static); f(friction_kinetic);
     f(inverse_decay_speed); f(damping_beta); f(horizontal_scale); f(vertical_scale); f(stiffness_scale);
+    f(impact_damping); f(floor_soft_ratio); f(floor_soft_depth); f(base_camber); f(wobble_damping);
   }
-  static constexpr int field_count = 11;
+  static constexpr int field_count = 16;
 };
 
 // Rigid-body state in the floor frame. Central differences keep positions at whole steps

@@ -42,6 +42,9 @@ struct Model {
   double corner_y[kMaxCorners] = {};
   double corner_rest_gap[kMaxCorners] = {};  // gap to the floor when standing at rest (uplift datum)
   double rounding_radius = 0.0;
+  // A corner at the middle of the base that lanes may lower by their base_camber (a slightly
+  // convex base); -1 when the section has none (kernels/lane_state.h).
+  std::int32_t camber_corner = -1;
   // Spring constants of each corner's contact: distributed stiffness [N/m^3] times the
   // contact length the corner represents times the out-of-plane depth.
   double corner_normal_stiffness[kMaxCorners] = {};  // N/m
@@ -57,6 +60,7 @@ struct Model {
 
   // Observation and end criteria.
   double stability_angle = 0.0;           // alpha: rotation at which the centre of mass passes over the pivot
+  double rocking_frequency = 0.0;         // p = sqrt(m g R / I_O) of the rigid equivalent, rad/s
   double tip_over_angle = 0.0;            // |theta| at which a lane counts as tipped over and stops
   double rocking_threshold_angle = 0.0;   // |theta| beyond which the cask rocks on one side (impact counting)
   double lift_off_height = 0.0;           // lowest corner above the floor by more than this: left the floor

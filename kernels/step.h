@@ -46,7 +46,10 @@ inline void step(const Model& model, const LaneParameters<T>& p, double table_ho
   CornerState<T> next[kMaxCorners];
   for (int k = 0; k < model.corner_count; ++k) {
     const T arm_x = broadcast<T>(model.corner_x[k]) - p.centre_x;  // arc centre from the centre of mass, body frame
-    const T arm_y = broadcast<T>(model.corner_y[k]) - p.centre_y;
+    // A convex base: the base-centre corner sits base_camber below the others.
+    const T corner_y = k == model.camber_corner ? broadcast<T>(model.corner_y[k]) - p.base_camber
+                                                : broadcast<T>(model.corner_y[k]);
+    const T arm_y = corner_y - p.centre_y;
     const T centre_x = c * arm_x - s * arm_y;  // ... and in the floor frame
     const T centre_y = s * arm_x + c * arm_y;
     const T gap = body.y + centre_y - radius;
@@ -129,7 +132,12 @@ inline void step(const Model& model, const LaneParameters<T>& p, double table_ho
   // ---- advance to t_{n+1} (stopped lanes keep their state) --------------------------------
   const T accel_x = force_x * p.inverse_mass - p.horizontal_scale * broadcast<T>(table_horizontal);
   const T accel_y = force_y * p.inverse_mass - (broadcast<T>(model.gravity) + p.vertical_scale * broadcast<T>(table_vertical));
-  const T accel_theta = moment * p.inverse_inertia;
+  // Out-of-plane losses (wobbling, top-spinning of a real cylinder) as a damping couple
+  // -I 2 zeta_w p (|theta| / alpha) omega whose ratio grows with the amplitude: zeta_w at
+  // |theta| = alpha, zero when it stands.
+  const T wobble = broadcast<T>(2.0 * model.rocking_frequency / model.stability_angle) * p.wobble_damping *
+                   lane::abs(body.theta) * body.omega;
+  const T accel_theta = moment * p.inverse_inertia - wobble;
   const T vx = body.vx + accel_x * dt;
   const T vy = body.vy + accel_y * dt;
   const T omega = body.omega + accel_theta * dt;

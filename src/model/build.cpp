@@ -81,14 +81,40 @@ Model build_model(const ModelSpec& spec, const RealisationParameters& nominal) {
   if (!(spec.stiffness.normal > 0.0) || !(spec.stiffness.shear > 0.0)) {
     throw std::invalid_argument("the contact stiffnesses must be positive");
   }
+  std::vector<ContactCorner> all = corners;
   Model m;
-  m.corner_count = static_cast<int>(corners.size());
+  if (spec.base_centre_contact) {
+    // The two corners of the base edge (standing on the floor) hand half their contact length
+    // to a corner midway between them.
+    std::vector<int> base;
+    for (int k = 0; k < static_cast<int>(all.size()); ++k) {
+      if (std::abs(all[k].rest_gap) <= kRestGapTolerance) base.push_back(k);
+    }
+    if (base.size() != 2) throw std::invalid_argument("a base-centre contact needs a base edge with exactly two corners");
+    ContactCorner middle;
+    middle.arc_centre = {0.5 * (all[base[0]].arc_centre.x + all[base[1]].arc_centre.x), all[base[0]].arc_centre.y};
+    middle.rest_gap = all[base[0]].rest_gap;
+    middle.contact_length = 0.0;
+    for (int k : base) {
+      const double share = 0.5 * all[k].contact_length;
+      all[k].contact_length -= share;
+      middle.contact_length += share;
+    }
+    all.push_back(middle);
+    m.camber_corner = static_cast<int>(all.size()) - 1;
+  }
+  if (static_cast<int>(all.size()) > kMaxCorners) {
+    throw std::invalid_argument("the section has " + std::to_string(all.size()) + " contact corners; at most " +
+                                std::to_string(kMaxCorners) + " are supported");
+  }
+  const std::vector<ContactCorner>& contact = all;
+  m.corner_count = static_cast<int>(contact.size());
   for (int k = 0; k < m.corner_count; ++k) {
-    m.corner_x[k] = corners[k].arc_centre.x;
-    m.corner_y[k] = corners[k].arc_centre.y;
-    m.corner_rest_gap[k] = corners[k].rest_gap;
-    m.corner_normal_stiffness[k] = spec.stiffness.normal * corners[k].contact_length * spec.section.depth;
-    m.corner_shear_stiffness[k] = spec.stiffness.shear * corners[k].contact_length * spec.section.depth;
+    m.corner_x[k] = contact[k].arc_centre.x;
+    m.corner_y[k] = contact[k].arc_centre.y;
+    m.corner_rest_gap[k] = contact[k].rest_gap;
+    m.corner_normal_stiffness[k] = spec.stiffness.normal * contact[k].contact_length * spec.section.depth;
+    m.corner_shear_stiffness[k] = spec.stiffness.shear * contact[k].contact_length * spec.section.depth;
   }
   m.rounding_radius = spec.section.rounding;
   m.friction_law = spec.friction_law;
@@ -129,6 +155,17 @@ Model build_model(const ModelSpec& spec, const RealisationParameters& nominal) {
     if (!(m.pad_clearance > 0.0)) throw std::invalid_argument("the pad is narrower than the cask");
   }
 
+  {
+    // p of the rigid equivalent: pivots at the outermost standing corners' arc centres.
+    double low = 1e300, high = -1e300;
+    for (int k = 0; k < m.corner_count; ++k) {
+      if (m.corner_rest_gap[k] > kRestGapTolerance) continue;
+      low = std::min(low, m.corner_x[k]);
+      high = std::max(high, m.corner_x[k]);
+    }
+    const double size = std::hypot(0.5 * (high - low), nominal.centre_of_mass.y - m.corner_y[0]);
+    m.rocking_frequency = std::sqrt(nominal.mass * m.gravity * size / (nominal.inertia + nominal.mass * size * size));
+  }
   const ModelFacts facts = model_facts(m, spec, nominal);
   // Twice the elastic tilt at which a corner would lift under a quasi-static push: rotations
   // below it are the cask swaying on its springs, not rocking.
@@ -160,15 +197,53 @@ LaneParameters<double> lane_parameters(const Model& model, const RealisationPara
   lane.horizontal_scale = p.horizontal_scale;
   lane.vertical_scale = p.vertical_scale;
   lane.stiffness_scale = p.stiffness_scale;
+  if (!(p.impact_damping >= 0.0)) throw std::invalid_argument("the impact damping must be non-negative");
+  if (!(p.floor_soft_ratio > 0.0 && p.floor_soft_ratio <= 1.0)) {
+    throw std::invalid_argument("the floor's soft-layer ratio must lie in (0, 1]");
+  }
+  if (!(p.floor_soft_depth >= 0.0)) throw std::invalid_argument("the floor's soft-layer depth must be non-negative");
+  if (!(p.base_camber >= 0.0)) throw std::invalid_argument("the base camber must be non-negative");
+  if (p.base_camber > 0.0 && model.camber_corner < 0) {
+    throw std::invalid_argument("a base camber needs a model with a base-centre contact");
+  }
+  if (!(p.wobble_damping >= 0.0)) throw std::invalid_argument("the wobble damping must be non-negative");
+  lane.impact_damping = p.impact_damping;
+  lane.floor_soft_ratio = p.floor_soft_ratio;
+  lane.floor_soft_depth = p.floor_soft_depth;
+  lane.base_camber = p.base_camber;
+  lane.wobble_damping = p.wobble_damping;
   return lane;
 }
 
 BodyState<double> rest_state(const Model& model, const LaneParameters<double>& lane) {
-  const double stiffness = total_standing_normal_stiffness(model) * lane.stiffness_scale;
-  const double penetration = model.gravity / (lane.inverse_mass * stiffness);
+  // Vertical equilibrium of the upright cask: the total spring force of the corners equals its
+  // weight. The force grows monotonically as the cask sinks, so bisection on the height finds
+  // it for any floor law and base camber (for linear springs it is m g / K exactly, to rounding).
+  const double weight = model.gravity / lane.inverse_mass;
+  auto spring_force = [&](double sink) {  // sink: how far the base level is below the floor
+    double total = 0.0;
+    for (int k = 0; k < model.corner_count; ++k) {
+      const double lowered = k == model.camber_corner ? lane.base_camber : 0.0;
+      const double overlap = std::max(0.0, sink + lowered - model.corner_rest_gap[k]);
+      const double stiffness = model.corner_normal_stiffness[k] * lane.stiffness_scale;
+      total += stiffness * (lane.floor_soft_ratio * std::min(overlap, lane.floor_soft_depth) +
+                            std::max(overlap - lane.floor_soft_depth, 0.0));
+    }
+    return total;
+  };
+  const double linear = weight / (total_standing_normal_stiffness(model) * lane.stiffness_scale);
+  double sink = linear;
+  if (lane.floor_soft_ratio != 1.0 || lane.base_camber != 0.0) {
+    double low = -lane.base_camber, high = linear / lane.floor_soft_ratio + lane.floor_soft_depth;
+    for (int i = 0; i < 200 && high - low > 1e-15 * (1.0 + high); ++i) {
+      const double middle = 0.5 * (low + high);
+      (spring_force(middle) < weight ? low : high) = middle;
+    }
+    sink = 0.5 * (low + high);
+  }
   BodyState<double> body{};
   body.x = lane.centre_x;
-  body.y = lane.centre_y - penetration;
+  body.y = lane.centre_y - sink;
   return body;
 }
 

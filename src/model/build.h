@@ -33,6 +33,10 @@ struct ModelSpec {
   double lift_off_height = 0.0;  // m; 0: a quarter of the section's height
   double pad_half_width = 0.0;   // m; 0: an unbounded pad
   double gravity = units::standard_gravity;
+  // Add a contact corner at the middle of the base edge, which a realisation's base_camber
+  // lowers (a slightly convex base). The base's contact length is shared: half to the middle
+  // corner, a quarter to each end.
+  bool base_centre_contact = false;
 };
 
 // One realisation's physical parameters, SI.
@@ -48,6 +52,12 @@ struct RealisationParameters {
   double horizontal_scale = 1.0;
   double vertical_scale = 1.0;
   double stiffness_scale = 1.0;
+  // Mechanisms beyond the source paper's model (kernels/lane_state.h); these values leave it.
+  double impact_damping = 0.0;   // s/m
+  double floor_soft_ratio = 1.0;
+  double floor_soft_depth = 0.0; // m
+  double base_camber = 0.0;      // m
+  double wobble_damping = 0.0;
 };
 
 RealisationParameters nominal_parameters(const ModelSpec& spec);  // mass properties from the section
@@ -74,7 +84,8 @@ ModelFacts model_facts(const Model& model, const ModelSpec& spec, const Realisat
 double damping_beta(const Model& model, const RealisationParameters& parameters);
 double total_standing_normal_stiffness(const Model& model);  // sum over corners with rest gap 0
 
-// Standing at rest, in static equilibrium on its springs (uniform penetration m g / K).
+// Standing upright at rest, its height in vertical equilibrium on its springs (m g / K for
+// linear springs; solved for a soft floor layer or a convex base).
 BodyState<double> rest_state(const Model& model, const LaneParameters<double>& lane);
 // Tilted by `rotation` about the pivot corner it then rests on, at rest, the pivot carrying the weight.
 BodyState<double> tilted_state(const Model& model, const LaneParameters<double>& lane, double rotation);

@@ -43,6 +43,7 @@ void expect_calibrated(const Case& c, double target) {
   EXPECT_NEAR(reached, target, 0.002) << "h = " << result.damping_ratio;
   EXPECT_NEAR(result.restitution, reached, 1e-15);
   ::testing::Test::RecordProperty("h_for_" + std::to_string(target), std::to_string(result.damping_ratio));
+  ::testing::Test::RecordProperty("error_for_" + std::to_string(target), std::to_string(reached - target));
 }
 
 TEST(Calibration, PaperModelReachesTargetsUpTo097) {
