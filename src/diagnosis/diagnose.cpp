@@ -1,0 +1,364 @@
+#include "diagnosis/diagnose.h"
+
+#include <omp.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+namespace caskdem::diagnosis {
+
+namespace {
+
+// The tolerances every model of a diagnosis is judged by: from the measurements, widened by
+// each test's own predictability at the specimen's nominal parameters.
+constexpr int kPredictabilityRealisations = 8;
+
+std::vector<TestReference> references_of(const MeasuredSet& set) {
+  const ModelVariant baseline(set.specimen, {}, set.vertical_measured);
+  std::vector<TestReference> references;
+  for (const MeasuredTest& t : set.tests) references.push_back(reference_of(t, baseline.model().stability_angle));
+  add_predictability(references, set.tests, baseline, baseline.reference(), kPredictabilityRealisations, set.settings.seed);
+  return references;
+}
+
+// J for every point over the given tests; the tests run in parallel, each as one block of lanes.
+std::vector<double> objective_over(const MeasuredSet& set, const std::vector<TestReference>& references,
+                                   const ModelVariant& variant, const std::vector<int>& tests,
+                                   const std::vector<std::vector<double>>& points, const DiagnosisOptions& options,
+                                   std::vector<std::vector<double>>* per_test = nullptr) {
+  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  std::vector<std::vector<double>> contribution(tests.size(), std::vector<double>(points.size(), 0.0));
+  if (per_test) per_test->assign(tests.size(), {});
+  std::exception_ptr failure;
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
+  for (std::size_t i = 0; i < tests.size(); ++i) {
+    try {
+      const MeasuredTest& test = set.tests[tests[i]];
+      const std::vector<SimulatedHistory> histories = simulate_test(variant, test, points, options.isa);
+      for (std::size_t p = 0; p < points.size(); ++p) {
+        const std::vector<double> r =
+            residuals(test, references[tests[i]], delayed(histories[p], test.time, variant.sensor_delay(points[p])));
+        contribution[i][p] = robust_loss(r);
+        if (per_test && p == 0) (*per_test)[i] = r;  // the first point's residuals, test by test
+      }
+    } catch (...) {
+#pragma omp critical
+      failure = std::current_exception();
+    }
+  }
+  if (failure) std::rethrow_exception(failure);
+  // Summed over tests in a fixed order, whatever the threads.
+  std::vector<double> total(points.size(), 0.0);
+  for (std::size_t i = 0; i < tests.size(); ++i) {
+    for (std::size_t p = 0; p < points.size(); ++p) total[p] += contribution[i][p];
+  }
+  return total;
+}
+
+// The error over some tests: sqrt of the mean loss per residual (the RMS of the residuals where
+// they are within a few tolerances).
+double error_of(const std::vector<std::vector<double>>& residuals, const std::vector<int>& tests) {
+  double sum = 0.0;
+  std::size_t count = 0;
+  for (int t : tests) {
+    sum += robust_loss(residuals[t]);
+    count += residuals[t].size();
+  }
+  return count > 0 ? std::sqrt(sum / double(count)) : 0.0;
+}
+
+// Fits a model; its searches start from `starts` (the model it extends, mechanism off) and from
+// the specimen's nominal values (mechanism off).
+ModelFit fit_variant(const MeasuredSet& set, const std::vector<TestReference>& references, const ModelVariant& variant,
+                     std::vector<std::vector<double>> starts, const DiagnosisOptions& options) {
+  ModelFit m;
+  m.mechanisms = variant.mechanisms();
+  m.name = variant.name();
+  m.parameters = variant.parameters();
+  m.training_residual_count = static_cast<int>(set.training.size() * measure_names().size());
+  const PopulationObjective objective = [&](const std::vector<std::vector<double>>& points) {
+    return objective_over(set, references, variant, set.training, points, options);
+  };
+  FitOptions fit_options;
+  fit_options.starts = set.settings.starts;
+  fit_options.evaluations = set.settings.evaluations;
+  fit_options.seed = set.settings.seed;
+  const std::vector<double> nominal = variant.reference();
+  if (std::find(starts.begin(), starts.end(), nominal) == starts.end()) starts.push_back(nominal);
+  m.fit = fit_parameters(m.parameters, starts, objective, fit_options, m.training_residual_count);
+
+  // Residuals of every test at the fitted point.
+  std::vector<int> all(set.tests.size());
+  std::iota(all.begin(), all.end(), 0);
+  m.residuals.assign(set.tests.size(), {});
+  for (int t : all) {
+    std::vector<std::vector<double>> per_test;
+    (void)objective_over(set, references, variant, {t}, {m.fit.best}, options, &per_test);
+    m.residuals[t] = per_test[0];
+  }
+  const double n = m.training_residual_count;
+  const double k = static_cast<double>(m.parameters.size());
+  const double j = std::max(m.fit.objective, 1e-300);
+  m.bic = n * std::log(j / n) + k * std::log(n);
+  m.aic = n * std::log(j / n) + 2.0 * k;
+  m.heldout_error = error_of(m.residuals, set.heldout);
+  return m;
+}
+
+CandidateScore score(const MeasuredSet& set, Mechanism mechanism, ModelFit model, const ModelFit& against,
+                     const DiagnosisOptions& options) {
+  CandidateScore s;
+  s.mechanism = mechanism;
+  s.heldout_gain = against.heldout_error > 0.0 ? 1.0 - model.heldout_error / against.heldout_error : 0.0;
+  s.bic_delta = model.bic - against.bic;
+  s.aic_delta = model.aic - against.aic;
+  for (int t : set.heldout) {
+    s.heldout_tests_improved += robust_loss(model.residuals[t]) < robust_loss(against.residuals[t]);
+  }
+  for (std::size_t m = 0; m < measure_names().size(); ++m) {
+    double mine = 0.0, theirs = 0.0;
+    for (int t : set.heldout) {
+      mine += model.residuals[t][m] * model.residuals[t][m];
+      theirs += against.residuals[t][m] * against.residuals[t][m];
+    }
+    s.measure_gain.push_back(theirs > 0.0 ? 1.0 - std::sqrt(mine / theirs) : 0.0);
+  }
+  const double improved = double(s.heldout_tests_improved) / double(set.heldout.size());
+  s.significant = s.heldout_gain >= options.minimum_gain && s.bic_delta <= options.maximum_bic_delta &&
+                  improved >= options.minimum_improved_fraction;
+  s.model = std::move(model);
+  return s;
+}
+
+// A model extended by a mechanism that stays switched off: the model it extends, with the extra
+// parameters (at their reference values) charged by the information criterion.
+ModelFit switched_off(const ModelFit& extended, const ModelVariant& variant) {
+  ModelFit m = extended;
+  m.mechanisms = variant.mechanisms();
+  m.name = variant.name();
+  m.parameters = variant.parameters();
+  std::vector<double> x = variant.reference();
+  for (std::size_t j = 0; j < m.parameters.size(); ++j) {
+    for (std::size_t i = 0; i < extended.parameters.size(); ++i) {
+      if (m.parameters[j].name == extended.parameters[i].name) x[j] = extended.fit.best[i];
+    }
+  }
+  m.fit.best = x;
+  m.fit.standard_error.clear();
+  m.fit.uncertainty_note = "the fit did not improve on the model it extends: the mechanism is switched off";
+  const double n = m.training_residual_count;
+  const double k = static_cast<double>(m.parameters.size());
+  m.bic = n * std::log(std::max(m.fit.objective, 1e-300) / n) + k * std::log(n);
+  m.aic = n * std::log(std::max(m.fit.objective, 1e-300) / n) + 2.0 * k;
+  return m;
+}
+
+void say(const DiagnosisOptions& options, const std::string& line) {
+  if (options.log) options.log(line);
+}
+
+// ---- residual structure -------------------------------------------------------------------
+
+double correlation(const std::vector<double>& x, const std::vector<double>& y) {
+  const std::size_t n = x.size();
+  if (n < 3) return 0.0;
+  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n, my = std::accumulate(y.begin(), y.end(), 0.0) / n;
+  double sxy = 0.0, sxx = 0.0, syy = 0.0;
+  for (std::size_t i = 0; i < n; ++i) {
+    sxy += (x[i] - mx) * (y[i] - my);
+    sxx += (x[i] - mx) * (x[i] - mx);
+    syy += (y[i] - my) * (y[i] - my);
+  }
+  return sxx > 0.0 && syy > 0.0 ? sxy / std::sqrt(sxx * syy) : 0.0;
+}
+
+// Mean over t-statistic of a sample: how consistently it is off zero.
+double t_statistic(const std::vector<double>& v) {
+  const std::size_t n = v.size();
+  if (n < 2) return 0.0;
+  const double mean = std::accumulate(v.begin(), v.end(), 0.0) / n;
+  double ss = 0.0;
+  for (double x : v) ss += (x - mean) * (x - mean);
+  const double sd = std::sqrt(ss / (n - 1));
+  return sd > 0.0 ? mean / (sd / std::sqrt(double(n))) : (mean != 0.0 ? 1e3 : 0.0);
+}
+
+double peak_rate(const std::vector<double>& x, const std::vector<std::uint8_t>& valid, double dt) {
+  double peak = 0.0;
+  for (std::size_t k = 2; k + 2 < x.size(); ++k) {
+    if (!valid[k - 2] || !valid[k + 2]) continue;
+    // A five-point derivative smooths sensor noise.
+    const double rate = (-x[k + 2] + 8.0 * x[k + 1] - 8.0 * x[k - 1] + x[k - 2]) / (12.0 * dt);
+    peak = std::max(peak, std::abs(rate));
+  }
+  return peak;
+}
+
+// The lag (s) that best aligns the simulated rotation with the measured one (positive: the
+// measurement is late), by cross-correlation over +-0.2 s.
+double lag_of(const MeasuredTest& test, const SimulatedHistory& simulated) {
+  const int steps = static_cast<int>(0.2 / test.time_step);
+  double best = -1e300;
+  int best_lag = 0;
+  for (int lag = -steps; lag <= steps; ++lag) {
+    double sum = 0.0;
+    for (std::size_t k = 0; k < test.time.size(); ++k) {
+      const auto j = static_cast<std::ptrdiff_t>(k) - lag;
+      if (j < 0 || j >= static_cast<std::ptrdiff_t>(simulated.rotation.size()) || !test.rotation_valid[k]) continue;
+      sum += test.rotation[k] * simulated.rotation[j];
+    }
+    if (sum > best) {
+      best = sum;
+      best_lag = lag;
+    }
+  }
+  return best_lag * test.time_step;
+}
+
+std::vector<StructureRow> residual_structure(const MeasuredSet& set, const std::vector<TestReference>& references,
+                                             const ModelFit& baseline, const Model& model,
+                                             const std::vector<SimulatedHistory>& histories) {
+  const auto& names = measure_names();
+  auto index = [&](const char* name) { return std::find(names.begin(), names.end(), name) - names.begin(); };
+  std::vector<double> amplitude, sliding_speed, impact_speed, vertical, asymmetry, lag;
+  std::vector<double> r_rms, r_slide, r_rate, r_duration;
+  for (std::size_t t = 0; t < set.tests.size(); ++t) {
+    const MeasuredTest& test = set.tests[t];
+    amplitude.push_back(references[t].measured.peak_rotation / model.stability_angle);
+    sliding_speed.push_back(peak_rate(test.slide, test.slide_valid, test.time_step));
+    impact_speed.push_back(test.has_angular_velocity ? peak_rate(test.rotation, test.rotation_valid, test.time_step)
+                                                     : peak_rate(test.rotation, test.rotation_valid, test.time_step));
+    double v = 0.0;
+    if (test.has_vertical) {
+      for (double a : test.vertical_table_acceleration) v += a * a;
+      v = std::sqrt(v / test.vertical_table_acceleration.size()) / model.gravity;
+    }
+    vertical.push_back(v);
+    const std::vector<double>& r = baseline.residuals[t];
+    asymmetry.push_back(r[index("rotation_asymmetry")]);
+    r_rms.push_back(r[index("rms_rotation")]);
+    r_slide.push_back(r[index("max_sliding")]);
+    r_rate.push_back(r[index("rocking_rate")]);
+    r_duration.push_back(r[index("rocking_duration")]);
+    lag.push_back(lag_of(test, histories[t]));
+  }
+  std::vector<StructureRow> rows = {
+      {"amplitude (peak theta / alpha)", "rms_rotation", correlation(amplitude, r_rms), "correlation",
+       "amplitude_dependent_restitution, out_of_plane_loss"},
+      {"amplitude (peak theta / alpha)", "rocking_duration", correlation(amplitude, r_duration), "correlation",
+       "amplitude_dependent_restitution, out_of_plane_loss, floor_compliance"},
+      {"amplitude (peak theta / alpha)", "rocking_rate", correlation(amplitude, r_rate), "correlation",
+       "base_imperfection, floor_compliance"},
+      {"peak sliding speed", "max_sliding", correlation(sliding_speed, r_slide), "correlation",
+       "velocity_dependent_friction"},
+      {"peak angular (impact) speed", "rms_rotation", correlation(impact_speed, r_rms), "correlation",
+       "amplitude_dependent_restitution"},
+      {"rotation sign", "rotation_asymmetry", t_statistic(asymmetry), "t (mean / standard error)",
+       "eccentric_mass, base_imperfection"},
+      {"vertical table acceleration (rms / g)", "rms_rotation", correlation(vertical, r_rms), "correlation",
+       "vertical_excitation"},
+      {"time (lag of measured behind simulated rotation, s)", "rotation_history",
+       std::accumulate(lag.begin(), lag.end(), 0.0) / lag.size(), "mean lag, s", "sensor_delay"},
+  };
+  return rows;
+}
+
+}  // namespace
+
+std::vector<SimulatedHistory> fitted_histories(const MeasuredSet& set, const ModelFit& fit, InstructionSet isa) {
+  const ModelVariant variant(set.specimen, fit.mechanisms, set.vertical_measured);
+  std::vector<SimulatedHistory> out;
+  for (const MeasuredTest& test : set.tests) {
+    out.push_back(delayed(simulate_test(variant, test, {fit.fit.best}, isa)[0], test.time, variant.sensor_delay(fit.fit.best)));
+  }
+  return out;
+}
+
+namespace {
+
+ModelFit fit_baseline(const MeasuredSet& set, const std::vector<TestReference>& references,
+                      const DiagnosisOptions& options) {
+  const ModelVariant baseline(set.specimen, {}, set.vertical_measured);
+  say(options, "fitting the baseline (friction, damping ratio, stiffness scale) on " +
+                   std::to_string(set.training.size()) + " training tests");
+  return fit_variant(set, references, baseline, {baseline.reference()}, options);
+}
+
+}  // namespace
+
+ModelFit calibrate_baseline(const MeasuredSet& set, const DiagnosisOptions& options) {
+  return fit_baseline(set, references_of(set), options);
+}
+
+Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  Diagnosis d;
+  say(options, "judging how predictable each test is (" + std::to_string(kPredictabilityRealisations) +
+                   " simulations per test with fresh input noise)");
+  const std::vector<TestReference> references = references_of(set);
+  d.baseline = fit_baseline(set, references, options);
+  const ModelVariant baseline_variant(set.specimen, {}, set.vertical_measured);
+  d.structure = residual_structure(set, references, d.baseline, baseline_variant.model(),
+                                   fitted_histories(set, d.baseline, options.isa));
+
+  for (Mechanism m : all_mechanisms()) {
+    const ModelVariant variant(set.specimen, {m}, set.vertical_measured);
+    say(options, "fitting " + variant.name());
+    CandidateScore candidate;
+    candidate.mechanism = m;
+    candidate.model = fit_variant(set, references, variant, {variant.reference(&d.baseline.fit.best)}, options);
+    d.ranking.push_back(std::move(candidate));
+  }
+  // The baseline again, from every candidate's baseline parameters: a candidate that fitted
+  // better only because its search found a better region of the baseline's own parameters
+  // must not pass for a cause.
+  {
+    std::vector<std::vector<double>> starts = {d.baseline.fit.best};
+    for (const CandidateScore& c : d.ranking) {
+      starts.emplace_back(c.model.fit.best.begin(), c.model.fit.best.begin() + baseline_variant.baseline_size());
+    }
+    say(options, "refitting the baseline from the candidates' baseline parameters");
+    ModelFit refined = fit_variant(set, references, baseline_variant, starts, options);
+    if (refined.fit.objective < d.baseline.fit.objective) d.baseline = std::move(refined);
+  }
+  for (CandidateScore& c : d.ranking) {
+    const ModelVariant variant(set.specimen, {c.mechanism}, set.vertical_measured);
+    if (c.model.fit.objective > d.baseline.fit.objective) c.model = switched_off(d.baseline, variant);
+    c = score(set, c.mechanism, std::move(c.model), d.baseline, options);
+  }
+  std::stable_sort(d.ranking.begin(), d.ranking.end(),
+                   [](const CandidateScore& a, const CandidateScore& b) { return a.heldout_gain > b.heldout_gain; });
+  const auto cause = std::find_if(d.ranking.begin(), d.ranking.end(), [](const CandidateScore& c) { return c.significant; });
+  if (cause != d.ranking.end()) {
+    d.cause = mechanism_name(cause->mechanism);
+    if (options.look_for_second_effect) {
+      const ModelFit& first = cause->model;
+      for (Mechanism m : all_mechanisms()) {
+        if (m == cause->mechanism) continue;
+        const ModelVariant variant(set.specimen, {cause->mechanism, m}, set.vertical_measured);
+        say(options, "fitting " + variant.name());
+        // Start from the cause's fit, the new mechanism off.
+        std::vector<double> reference = variant.reference();
+        for (std::size_t i = 0; i < first.parameters.size(); ++i) {
+          for (std::size_t j = 0; j < variant.parameters().size(); ++j) {
+            if (variant.parameters()[j].name == first.parameters[i].name) reference[j] = first.fit.best[i];
+          }
+        }
+        ModelFit fitted = fit_variant(set, references, variant, {reference}, options);
+        if (fitted.fit.objective > first.fit.objective) fitted = switched_off(first, variant);
+        d.second_ranking.push_back(score(set, m, std::move(fitted), first, options));
+      }
+      std::stable_sort(d.second_ranking.begin(), d.second_ranking.end(),
+                       [](const CandidateScore& a, const CandidateScore& b) { return a.heldout_gain > b.heldout_gain; });
+      const auto second = std::find_if(d.second_ranking.begin(), d.second_ranking.end(),
+                                       [](const CandidateScore& c) { return c.significant; });
+      if (second != d.second_ranking.end()) d.second_cause = mechanism_name(second->mechanism);
+    }
+  }
+  d.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return d;
+}
+
+}  // namespace caskdem::diagnosis

@@ -1,0 +1,93 @@
+#pragma once
+// The diagnosis: from measured tests to "this is where the model disagrees, this is the
+// most likely physical cause, this is how much the extended model gains on tests it was not
+// fitted to".
+//
+//  1. Calibrate the baseline (friction, damping ratio, stiffness scale) on the training tests.
+//  2. Measure its discrepancy on every test (src/diagnosis/measures.h) and look for structure
+//     in it: residuals against amplitude, sliding speed, impact speed, rotation sign, vertical
+//     acceleration and time (a lag between simulated and measured rotation).
+//  3. For each mechanism, fit baseline + mechanism (all parameters) on the training tests.
+//  4. Score each on the held-out tests (fractional reduction of the held-out error against
+//     the baseline) and by the Bayesian information criterion on the training tests, which
+//     charges the extra parameters: with N scaled residuals, their loss J (pseudo-Huber:
+//     squares within a few tolerances; src/diagnosis/measures.h) and k parameters,
+//     BIC = N ln(J/N) + k ln N (Gaussian residuals of unknown common variance where the loss
+//     is quadratic).
+//  5. The cause is the mechanism with the largest held-out gain among the significant ones:
+//     held-out gain >= minimum_gain, BIC lower by at least -maximum_bic_delta, and the held-out
+//     error lower on at least half of the held-out tests. None significant: "none", the model
+//     disagrees with the data no more than noise explains. Then each remaining mechanism is
+//     fitted on top of the cause, and a significant one is reported as a second effect.
+
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "diagnosis/fitting.h"
+#include "diagnosis/measured_set.h"
+#include "diagnosis/measures.h"
+#include "kernels/block.h"
+
+namespace caskdem::diagnosis {
+
+struct DiagnosisOptions {
+  InstructionSet isa = InstructionSet::automatic;
+  int threads = 0;  // 0: OpenMP's default
+  double minimum_gain = 0.2;
+  double maximum_bic_delta = -10.0;
+  double minimum_improved_fraction = 0.5;
+  bool look_for_second_effect = true;
+  std::function<void(const std::string&)> log;  // progress lines (may be empty)
+};
+
+struct ModelFit {
+  std::vector<Mechanism> mechanisms;
+  std::string name;
+  std::vector<Parameter> parameters;
+  FitResult fit;
+  int training_residual_count = 0;
+  double bic = 0.0;
+  double aic = 0.0;
+  std::vector<std::vector<double>> residuals;  // per test (all tests), per measure, at the fitted point
+  double heldout_error = 0.0;                  // sqrt(loss per residual) over the held-out tests
+};
+
+struct CandidateScore {
+  Mechanism mechanism;
+  ModelFit model;
+  double heldout_gain = 0.0;     // 1 - heldout_error(candidate) / heldout_error(reference model)
+  double bic_delta = 0.0;        // against the reference model (negative: better)
+  double aic_delta = 0.0;
+  int heldout_tests_improved = 0;
+  std::vector<double> measure_gain;  // per measure, over the held-out tests
+  bool significant = false;
+};
+
+struct StructureRow {
+  std::string variable;   // what the residual is set against
+  std::string residual;   // which residual
+  double statistic = 0.0; // correlation across tests, or mean / t for a sign or lag
+  std::string statistic_name;
+  std::string points_to;  // mechanisms this pattern suggests
+};
+
+struct Diagnosis {
+  std::string cause = "none";
+  std::string second_cause;  // empty when no second effect
+  ModelFit baseline;
+  std::vector<CandidateScore> ranking;         // by held-out gain
+  std::vector<CandidateScore> second_ranking;  // on top of the cause
+  std::vector<StructureRow> structure;
+  double wall_seconds = 0.0;
+};
+
+// Step 1 alone (`caskdem calibrate-measured`).
+ModelFit calibrate_baseline(const MeasuredSet& set, const DiagnosisOptions& options);
+
+Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options);
+
+// The simulated histories of a fitted model on every test (for reports and plots).
+std::vector<SimulatedHistory> fitted_histories(const MeasuredSet& set, const ModelFit& fit, InstructionSet isa);
+
+}  // namespace caskdem::diagnosis

@@ -1,0 +1,308 @@
+#include "diagnosis/fitting.h"
+
+#include <algorithm>
+#include <cmath>
+#include <condition_variable>
+#include <exception>
+#include <limits>
+#include <mutex>
+#include <numeric>
+#include <optional>
+#include <thread>
+
+#include <Eigen/Dense>
+#include <nlopt.hpp>
+
+#include "ensemble/sampling.h"
+
+namespace caskdem::diagnosis {
+
+double to_unit(const Parameter& p, double value) {
+  const double u = p.logarithmic ? std::log(value / p.low) / std::log(p.high / p.low) : (value - p.low) / (p.high - p.low);
+  return std::clamp(u, 0.0, 1.0);
+}
+
+double from_unit(const Parameter& p, double unit) {
+  unit = std::clamp(unit, 0.0, 1.0);
+  return p.logarithmic ? p.low * std::pow(p.high / p.low, unit) : p.low + unit * (p.high - p.low);
+}
+
+namespace {
+
+// Gathers the points the searches ask for until every running search waits, then evaluates
+// them as one population. The order of a population is the order of the searches, so the
+// run is the same whatever the threads' timing.
+class Lockstep {
+ public:
+  Lockstep(int searches, const std::vector<Parameter>& space, const PopulationObjective& objective)
+      : space_(space), objective_(objective), running_(searches), requests_(searches), answers_(searches) {}
+
+  double evaluate(int search, const std::vector<double>& unit) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    requests_[search] = unit;
+    answers_[search].reset();
+    ready_.notify_all();
+    answered_.wait(lock, [&] { return answers_[search].has_value(); });
+    return *answers_[search];
+  }
+
+  void finished() {
+    std::lock_guard<std::mutex> lock(mutex_);
+    --running_;
+    ready_.notify_all();
+  }
+
+  // Runs on the calling thread until every search has finished.
+  void serve(int& evaluations, int& populations) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    while (true) {
+      ready_.wait(lock, [&] { return running_ == 0 || waiting() == running_; });
+      if (running_ == 0) return;
+      std::vector<int> who;
+      std::vector<std::vector<double>> points;
+      for (int s = 0; s < static_cast<int>(requests_.size()); ++s) {
+        if (!requests_[s]) continue;
+        who.push_back(s);
+        std::vector<double> x(space_.size());
+        for (std::size_t i = 0; i < space_.size(); ++i) x[i] = from_unit(space_[i], (*requests_[s])[i]);
+        points.push_back(std::move(x));
+      }
+      lock.unlock();
+      std::vector<double> values;
+      try {
+        values = objective_(points);
+      } catch (...) {
+        failure_ = std::current_exception();
+        values.assign(points.size(), std::numeric_limits<double>::infinity());
+      }
+      lock.lock();
+      evaluations += static_cast<int>(points.size());
+      ++populations;
+      for (std::size_t k = 0; k < who.size(); ++k) {
+        requests_[who[k]].reset();
+        answers_[who[k]] = std::isfinite(values[k]) ? values[k] : std::numeric_limits<double>::max();
+      }
+      answered_.notify_all();
+    }
+  }
+
+  std::exception_ptr failure() const { return failure_; }
+
+ private:
+  int waiting() const {
+    int count = 0;
+    for (const auto& r : requests_) count += r.has_value();
+    return count;
+  }
+  const std::vector<Parameter>& space_;
+  const PopulationObjective& objective_;
+  std::mutex mutex_;
+  std::condition_variable ready_, answered_;
+  int running_;
+  std::vector<std::optional<std::vector<double>>> requests_;
+  std::vector<std::optional<double>> answers_;
+  std::exception_ptr failure_;
+};
+
+struct SearchResult {
+  std::vector<double> unit;
+  double value = std::numeric_limits<double>::infinity();
+};
+
+// Standard errors from the curvature of J at the optimum (central differences in unit
+// coordinates, one population).
+void curvature_errors(const std::vector<Parameter>& space, FitResult& result, const PopulationObjective& objective,
+                      int residual_count) {
+  const int n = static_cast<int>(space.size());
+  std::vector<double> centre(n);
+  for (int i = 0; i < n; ++i) centre[i] = to_unit(space[i], result.best[i]);
+  const double h = 0.02;
+  // Keep the stencil inside the box.
+  for (double& c : centre) c = std::clamp(c, h, 1.0 - h);
+  std::vector<std::vector<double>> units = {centre};
+  for (int i = 0; i < n; ++i) {
+    for (int s : {1, -1}) {
+      units.push_back(centre);
+      units.back()[i] += s * h;
+    }
+  }
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      for (int si : {1, -1}) {
+        for (int sj : {1, -1}) {
+          units.push_back(centre);
+          units.back()[i] += si * h;
+          units.back()[j] += sj * h;
+        }
+      }
+    }
+  }
+  std::vector<std::vector<double>> points;
+  for (const auto& u : units) {
+    std::vector<double> x(n);
+    for (int i = 0; i < n; ++i) x[i] = from_unit(space[i], u[i]);
+    points.push_back(std::move(x));
+  }
+  const std::vector<double> value = objective(points);
+  result.evaluations += static_cast<int>(points.size());
+  ++result.populations;
+  Eigen::MatrixXd hessian(n, n);
+  for (int i = 0; i < n; ++i) hessian(i, i) = (value[1 + 2 * i] - 2.0 * value[0] + value[2 + 2 * i]) / (h * h);
+  int k = 1 + 2 * n;
+  for (int i = 0; i < n; ++i) {
+    for (int j = i + 1; j < n; ++j) {
+      const double pp = value[k], pm = value[k + 1], mp = value[k + 2], mm = value[k + 3];
+      hessian(i, j) = hessian(j, i) = (pp - pm - mp + mm) / (4.0 * h * h);
+      k += 4;
+    }
+  }
+  const Eigen::SelfAdjointEigenSolver<Eigen::MatrixXd> eigen(hessian);
+  if (eigen.info() != Eigen::Success || eigen.eigenvalues().minCoeff() <= 0.0) {
+    result.uncertainty_note = "the objective's curvature at the optimum is not positive definite (a parameter the "
+                              "tests do not determine, or a rugged objective): no standard errors";
+    return;
+  }
+  const double variance = value[0] / std::max(1, residual_count - n);
+  const Eigen::MatrixXd covariance = 2.0 * variance * hessian.inverse();
+  for (int i = 0; i < n; ++i) {
+    const Parameter& p = space[i];
+    // d(physical)/d(unit) at the optimum.
+    const double slope = p.logarithmic ? result.best[i] * std::log(p.high / p.low) : p.high - p.low;
+    result.standard_error.push_back(std::abs(slope) * std::sqrt(covariance(i, i)));
+  }
+}
+
+
+// One round: explore (one population), then local searches from the best points explored.
+SearchResult explore_and_search(const std::vector<Parameter>& space, const std::vector<std::vector<double>>& explored,
+                                const PopulationObjective& objective, const FitOptions& options, int searches,
+                                FitResult& result) {
+  const int n = static_cast<int>(space.size());
+  std::vector<double> explored_values;
+  {
+    std::vector<std::vector<double>> points;
+    for (const auto& u : explored) {
+      std::vector<double> x(n);
+      for (int i = 0; i < n; ++i) x[i] = from_unit(space[i], u[i]);
+      points.push_back(std::move(x));
+    }
+    explored_values = objective(points);
+    result.evaluations += static_cast<int>(points.size());
+    ++result.populations;
+  }
+  // The searches start from the best points explored, the first point always among them (a
+  // nested model's search then cannot end worse than the model it extends).
+  std::vector<int> order(explored.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin() + 1, order.end(), [&](int a, int b) { return explored_values[a] < explored_values[b]; });
+  std::vector<std::vector<double>> starts;
+  for (int s = 0; s < searches && s < static_cast<int>(order.size()); ++s) starts.push_back(explored[order[s]]);
+
+  Lockstep lockstep(static_cast<int>(starts.size()), space, objective);
+  std::vector<SearchResult> ends(starts.size());
+  std::vector<std::thread> threads;
+  for (int s = 0; s < static_cast<int>(starts.size()); ++s) {
+    threads.emplace_back([&, s] {
+      try {
+        nlopt::opt search(options.method, static_cast<unsigned>(n));
+        search.set_lower_bounds(std::vector<double>(n, 0.0));
+        search.set_upper_bounds(std::vector<double>(n, 1.0));
+        search.set_maxeval(options.evaluations);
+        search.set_xtol_abs(1e-4);
+        search.set_initial_step(std::vector<double>(n, options.initial_step));
+        // NLopt calls back with a plain function pointer; the context names the search.
+        std::pair<Lockstep*, int> context{&lockstep, s};
+        struct Bridge {
+          static double call(unsigned count, const double* u, double*, void* data) {
+            auto* c = static_cast<std::pair<Lockstep*, int>*>(data);
+            return c->first->evaluate(c->second, std::vector<double>(u, u + count));
+          }
+        };
+        search.set_min_objective(Bridge::call, &context);
+        std::vector<double> u = starts[s];
+        double value = explored_values[order[s]];
+        try {
+          search.optimize(u, value);
+        } catch (const nlopt::roundoff_limited&) {
+          // The search stopped on rounding: its last point stands.
+        } catch (const std::runtime_error&) {
+          // NLopt reports a generic failure on noisy objectives at times; its point stands.
+        }
+        ends[s] = {u, value};
+      } catch (...) {
+        // A search that could not run leaves its start as its end (value infinite).
+      }
+      lockstep.finished();
+    });
+  }
+  lockstep.serve(result.evaluations, result.populations);
+  for (std::thread& t : threads) t.join();
+  if (lockstep.failure()) std::rethrow_exception(lockstep.failure());
+  // The best explored point counts too: a search never returns worse than it started, but
+  // an explored point outside the searches' starts may be better than every end.
+  SearchResult best = *std::min_element(ends.begin(), ends.end(),
+                                        [](const SearchResult& a, const SearchResult& b) { return a.value < b.value; });
+  const auto explored_best = std::min_element(explored_values.begin(), explored_values.end()) - explored_values.begin();
+  if (explored_values[explored_best] < best.value) best = {explored[explored_best], explored_values[explored_best]};
+  return best;
+}
+
+}  // namespace
+
+FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<std::vector<double>>& references,
+                         const PopulationObjective& objective, const FitOptions& options, int residual_count) {
+  const int n = static_cast<int>(space.size());
+  const int searches = std::max(1, options.starts);
+  FitResult result;
+  // Round 1: the references, a Latin hypercube of the box, and one near the references.
+  std::vector<std::vector<double>> explored;
+  for (const std::vector<double>& reference : references) {
+    std::vector<double> u(n);
+    for (int i = 0; i < n; ++i) u[i] = to_unit(space[i], reference[i]);
+    explored.push_back(u);
+  }
+  {
+    const int samples = std::max(searches, options.exploration) - static_cast<int>(references.size());
+    const int global = std::max(1, samples / 2), local = std::max(1, samples - global);
+    const Sampler everywhere(SamplingMethod::latin_hypercube, options.seed, 1, global, n);
+    const Sampler nearby(SamplingMethod::latin_hypercube, options.seed + 1, 1, local, n);
+    std::vector<double> u(n);
+    for (int s = 0; s < global; ++s) {
+      for (int i = 0; i < n; ++i) u[i] = everywhere.uniform(0, s, i);
+      explored.push_back(u);
+    }
+    const std::size_t first_references = references.size();
+    for (int s = 0; s < local; ++s) {
+      const std::vector<double> around = explored[s % first_references];
+      for (int i = 0; i < n; ++i) {
+        const double v = nearby.uniform(0, s, i);
+        u[i] = space[i].mechanism ? v : std::clamp(around[i] + options.local_spread * (2.0 * v - 1.0), 0.0, 1.0);
+      }
+      explored.push_back(u);
+    }
+  }
+  SearchResult best = explore_and_search(space, explored, objective, options, searches, result);
+
+  // Round 2: every parameter moved a little around the best end point.
+  if (options.refinement > 0) {
+    std::vector<std::vector<double>> around = {best.unit};
+    const Sampler nearby(SamplingMethod::latin_hypercube, options.seed + 2, 1, options.refinement, n);
+    std::vector<double> u(n);
+    for (int s = 0; s < options.refinement; ++s) {
+      for (int i = 0; i < n; ++i) {
+        u[i] = std::clamp(best.unit[i] + 0.5 * options.local_spread * (2.0 * nearby.uniform(0, s, i) - 1.0), 0.0, 1.0);
+      }
+      around.push_back(u);
+    }
+    const SearchResult again = explore_and_search(space, around, objective, options, std::max(1, searches / 2), result);
+    if (again.value < best.value) best = again;
+  }
+
+  result.best.resize(n);
+  for (int i = 0; i < n; ++i) result.best[i] = from_unit(space[i], best.unit[i]);
+  result.objective = best.value;
+  curvature_errors(space, result, objective, residual_count);
+  return result;
+}
+
+}  // namespace caskdem::diagnosis

@@ -1,0 +1,65 @@
+#pragma once
+// Fitting model parameters to measured tests with NLopt, a population at a time.
+//
+// A first population explores the parameter box (one lockstep run): the reference points,
+// a Latin hypercube of the whole box, and a Latin hypercube near the references (their
+// baseline parameters moved a little, a mechanism's parameters over their whole range:
+// a mechanism that matters changes the best baseline parameters only a little, and the
+// region where it fits can be too small for a global sample of a 5-D box to hit). The best
+// points explored start several local searches (NLopt's BOBYQA,
+// Powell 2009, bounded, derivative-free), which run side by side, each in its own thread:
+// whenever all of them are waiting for an objective value, their points are evaluated together
+// as lanes of one lockstep simulation (the ensemble kernel), so a population costs one run.
+// Rocking is chaotic and the objective rugged, so a local search started from the reference
+// alone can settle in a far basin; exploring first finds the basins. A second, tighter round
+// explores around the best end point (every parameter moved a little) and searches again,
+// so that the result depends less on one draw. The searches work on unit coordinates (linear
+// or logarithmic in each parameter) and the best end point wins.
+//
+// Uncertainty: the objective J is a sum of N squared scaled residuals; near the optimum
+// J(x) ~ J* + (x - x*)' H (x - x*) / 2, and with the residual variance estimated as
+// s^2 = J* / (N - k) the covariance of the estimate is 2 s^2 H^-1 (Gauss-Newton, Bates & Watts
+// 1988). H comes from central finite differences, evaluated as one more population.
+
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+#include <nlopt.hpp>
+
+#include "diagnosis/mechanisms.h"
+
+namespace caskdem::diagnosis {
+
+// Objective values of a population of parameter vectors (physical values), in one run.
+using PopulationObjective = std::function<std::vector<double>(const std::vector<std::vector<double>>& points)>;
+
+struct FitOptions {
+  int exploration = 192;      // points of the first population (the references, then half global, half local)
+  double local_spread = 0.05; // of the unit box: how far local exploration moves a reference's baseline parameters
+  int starts = 8;             // parallel local searches, from the best points explored
+  int evaluations = 60;       // per search
+  int refinement = 96;        // points of a second exploration around the best end point (0: none)
+  double initial_step = 0.1;  // of the unit box, the searches' first steps
+  nlopt::algorithm method = nlopt::LN_BOBYQA;
+  std::uint64_t seed = 1;     // Latin hypercube
+};
+
+struct FitResult {
+  std::vector<double> best;        // physical values
+  double objective = 0.0;
+  int evaluations = 0;             // points evaluated, all searches
+  int populations = 0;             // lockstep runs
+  std::vector<double> standard_error;  // physical units; empty when the curvature is not positive definite
+  std::string uncertainty_note;        // why there is none, when there is none
+};
+
+// `references`: points every search family starts from (the first is always searched).
+FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<std::vector<double>>& references,
+                         const PopulationObjective& objective, const FitOptions& options, int residual_count);
+
+double to_unit(const Parameter& p, double value);
+double from_unit(const Parameter& p, double unit);
+
+}  // namespace caskdem::diagnosis

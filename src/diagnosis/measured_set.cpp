@@ -1,0 +1,100 @@
+#include "diagnosis/measured_set.h"
+
+#include <algorithm>
+
+#include "core/error.h"
+
+namespace caskdem::diagnosis {
+
+Case read_specimen(const std::filesystem::path& specimen, DiagnosisSettings* settings) {
+  const toml::table document = parse_toml_file(specimen);
+  TableReader root(document, specimen, "");
+  Case c;
+  c.file = specimen;
+  c.name = specimen.parent_path().filename().string();
+  c.title = root.optional_string("title").value_or(c.name);
+  read_cask(root, c);
+  const RealisationParameters mass = nominal_parameters(c.model);
+  c.parameters.mass = mass.mass;
+  c.parameters.inertia = mass.inertia;
+  c.parameters.centre_of_mass = mass.centre_of_mass;
+  read_contact(root, c);
+  read_friction(root, c);
+  read_damping(root, c);
+  read_integration(root, c);
+  read_limits(root, c);
+  if (c.model.friction_law != FrictionLaw::constant) {
+    root.fail("friction", "the diagnosis starts from constant friction (law = \"constant\"); velocity-dependent "
+                          "friction is one of the mechanisms it tests");
+  }
+  DiagnosisSettings local;
+  DiagnosisSettings& s = settings ? *settings : local;
+  if (root.has_table("diagnosis")) {
+    TableReader t = root.table("diagnosis");
+    if (t.has("heldout")) {
+      const toml::array* list = document["diagnosis"]["heldout"].as_array();
+      t.accept("heldout");
+      if (!list) t.fail("heldout", "expected a list of test names such as [\"test5\", \"test6\"]");
+      for (const toml::node& n : *list) {
+        auto name = n.value<std::string>();
+        if (!name) t.fail("heldout", "expected test names in quotes");
+        s.heldout.push_back(*name);
+      }
+    }
+    const long starts = t.optional_integer("starts").value_or(8);
+    if (starts < 1 || starts > 64) t.fail("starts", "expected 1 to 64 searches");
+    const long evaluations = t.optional_integer("evaluations").value_or(60);
+    if (evaluations < 10 || evaluations > 5000) t.fail("evaluations", "expected 10 to 5000 evaluations");
+    const long seed = t.optional_integer("seed").value_or(1);
+    if (seed < 0) t.fail("seed", "expected a non-negative whole number");
+    s.starts = static_cast<int>(starts);
+    s.evaluations = static_cast<int>(evaluations);
+    s.seed = static_cast<std::uint64_t>(seed);
+    t.reject_unknown_keys();
+  }
+  root.reject_unknown_keys();
+  return c;
+}
+
+MeasuredSet read_measured_set(const std::filesystem::path& directory) {
+  MeasuredSet set;
+  set.directory = directory;
+  if (!std::filesystem::is_directory(directory)) {
+    throw InputError(located(directory, 0, "not a directory; expected a measured-data directory with specimen.toml and CSV files"));
+  }
+  const std::filesystem::path specimen = directory / "specimen.toml";
+  set.specimen = read_specimen(specimen, &set.settings);
+
+  std::vector<std::filesystem::path> files;
+  for (const auto& entry : std::filesystem::directory_iterator(directory)) {
+    if (entry.is_regular_file() && entry.path().extension() == ".csv") files.push_back(entry.path());
+  }
+  std::sort(files.begin(), files.end());
+  if (files.size() < 2) {
+    throw InputError(located(directory, 0, "found " + std::to_string(files.size()) +
+                                               " test files (*.csv); a diagnosis needs at least 2 (one to fit, one to check)"));
+  }
+  for (const auto& file : files) set.tests.push_back(read_measured_test(file));
+
+  set.vertical_measured = std::all_of(set.tests.begin(), set.tests.end(), [](const MeasuredTest& t) { return t.has_vertical; });
+  for (int i = 0; i < static_cast<int>(set.tests.size()); ++i) {
+    const std::string& name = set.tests[i].name;
+    const bool held = set.settings.heldout.empty()
+                          ? i % 3 == 1
+                          : std::find(set.settings.heldout.begin(), set.settings.heldout.end(), name) != set.settings.heldout.end();
+    (held ? set.heldout : set.training).push_back(i);
+  }
+  for (const std::string& name : set.settings.heldout) {
+    if (std::none_of(set.tests.begin(), set.tests.end(), [&](const MeasuredTest& t) { return t.name == name; })) {
+      throw InputError(located(specimen, 0, "key diagnosis.heldout: no test named \"" + name + "\""));
+    }
+  }
+  if (set.training.empty() || set.heldout.empty()) {
+    throw InputError(located(specimen, 0, "the tests must split into a training and a held-out part; got " +
+                                              std::to_string(set.training.size()) + " and " +
+                                              std::to_string(set.heldout.size())));
+  }
+  return set;
+}
+
+}  // namespace caskdem::diagnosis

@@ -1,0 +1,45 @@
+#pragma once
+// A measured-data directory: `specimen.toml` (the cask, floor and contact as in a case file,
+// with the values the experimenter knows, and an optional [diagnosis] table) and one CSV per
+// test (src/diagnosis/measured_test.h). README, "Measured data", has an example.
+//
+//   [diagnosis]
+//   heldout = ["test5", "test6"]   tests kept out of every fit and used to score (default:
+//                                  every third test, starting with the second)
+//   starts = 8                     parallel local searches per fit (SIMD lanes of a population)
+//   evaluations = 60               objective evaluations per search
+//   seed = 1
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "casefile/case_file.h"
+#include "diagnosis/measured_test.h"
+
+namespace caskdem::diagnosis {
+
+struct DiagnosisSettings {
+  std::vector<std::string> heldout;
+  int starts = 8;
+  int evaluations = 60;
+  std::uint64_t seed = 1;
+};
+
+struct MeasuredSet {
+  std::filesystem::path directory;
+  Case specimen;
+  DiagnosisSettings settings;
+  std::vector<MeasuredTest> tests;    // sorted by name
+  std::vector<int> training, heldout;  // indices into tests
+  bool vertical_measured = false;      // every test has a vertical channel
+};
+
+// Reads specimen.toml and every *.csv in the directory; InputError naming the file and key or
+// line when something cannot be used.
+MeasuredSet read_measured_set(const std::filesystem::path& directory);
+
+// The specimen file alone (and its [diagnosis] settings).
+Case read_specimen(const std::filesystem::path& file, DiagnosisSettings* settings);
+
+}  // namespace caskdem::diagnosis

@@ -1,0 +1,85 @@
+// How predictable each measure of each test is, whatever the model: the spread of the measure
+// over simulations that differ in a noise realisation added to the table channel, at the
+// noise level the channel itself shows (second differences), and in the baseline parameters,
+// each moved by a few percent (kParameterSpread). A chaotic test (many impacts near the
+// uplift threshold) gets wide tolerances on its rotation measures; so does a knife-edge
+// measure, such as the net drift of a cask sliding both ways under a sine, which changes by
+// half when the kinetic friction changes by 2 %: no model whose parameters are known to a few
+// percent can predict it, and judged by it the parameter space is a haystack of needles. A
+// sliding test whose response follows its input keeps tight tolerances.
+
+#include <algorithm>
+#include <cmath>
+
+#include <Random123/boxmuller.hpp>
+#include <Random123/philox.h>
+
+#include "diagnosis/measures.h"
+#include "diagnosis/mechanisms.h"
+#include "diagnosis/test_simulation.h"
+
+namespace caskdem::diagnosis {
+
+namespace {
+
+double channel_noise(const std::vector<double>& x) {
+  double sum = 0.0;
+  for (std::size_t k = 1; k + 1 < x.size(); ++k) {
+    const double d = x[k + 1] - 2.0 * x[k] + x[k - 1];
+    sum += d * d;
+  }
+  return x.size() > 2 ? std::sqrt(sum / double(x.size() - 2) / 6.0) : 0.0;
+}
+
+double normal(std::uint64_t seed, std::uint64_t test, std::uint64_t realisation, std::uint64_t sample) {
+  using Philox = r123::Philox4x32;
+  const Philox::key_type key = {{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)}};
+  const Philox::ctr_type counter = {{static_cast<std::uint32_t>(sample), static_cast<std::uint32_t>(realisation),
+                                     static_cast<std::uint32_t>(test), 0x9ed1}};
+  const Philox::ctr_type out = Philox()(counter, key);
+  return r123::boxmuller((std::uint64_t(out[0]) << 32) | out[1], (std::uint64_t(out[2]) << 32) | out[3]).x;
+}
+
+// Relative spread of the baseline parameters (friction, damping ratio, stiffness scale) over the
+// realisations: what a calibration typically leaves open.
+constexpr double kParameterSpread[] = {0.02, 0.1, 0.1};
+
+}  // namespace
+
+void add_predictability(std::vector<TestReference>& references, const std::vector<MeasuredTest>& tests,
+                        const ModelVariant& variant, const std::vector<double>& x, int realisations, std::uint64_t seed) {
+  const std::size_t measures = measure_names().size();
+#pragma omp parallel for schedule(dynamic, 1)
+  for (std::size_t t = 0; t < tests.size(); ++t) {
+    const double noise = channel_noise(tests[t].table_acceleration);
+    std::vector<std::vector<double>> values(measures);
+    for (int r = 0; r < realisations; ++r) {
+      // The same parameter draw for every test of a realisation (counter "test" 0xffff).
+      std::vector<double> moved = x;
+      for (int i = 0; i < 3; ++i) {
+        const Parameter& p = variant.parameters()[i];
+        moved[i] = std::clamp(x[i] * std::exp(kParameterSpread[i] * normal(seed, 0xffff, r, i)), p.low, p.high);
+      }
+      MeasuredTest perturbed = tests[t];
+      for (std::size_t k = 0; k < perturbed.table_acceleration.size(); ++k) {
+        perturbed.table_acceleration[k] += noise * normal(seed, t, r, k);
+      }
+      const SimulatedHistory h = delayed(simulate_test(variant, perturbed, {moved}, InstructionSet::automatic)[0],
+                                         perturbed.time, variant.sensor_delay(moved));
+      // Residual times tolerance: the raw difference of each measure from the measured value.
+      const std::vector<double> scaled = residuals(tests[t], references[t], h);
+      for (std::size_t m = 0; m < measures; ++m) values[m].push_back(scaled[m] * references[t].tolerance[m]);
+    }
+    for (std::size_t m = 0; m < measures; ++m) {
+      double mean = 0.0;
+      for (double v : values[m]) mean += v;
+      mean /= realisations;
+      double ss = 0.0;
+      for (double v : values[m]) ss += (v - mean) * (v - mean);
+      const double spread = realisations > 1 ? std::sqrt(ss / (realisations - 1)) : 0.0;
+      references[t].tolerance[m] = std::hypot(references[t].tolerance[m], spread);
+    }
+  }
+}
+
+}  // namespace caskdem::diagnosis

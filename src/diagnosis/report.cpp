@@ -1,0 +1,237 @@
+#include "diagnosis/report.h"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "caskdem/build_info.h"
+#include "io/hdf5_file.h"
+#include "io/run_output.h"
+
+namespace caskdem::diagnosis {
+
+namespace {
+
+nlohmann::json parameters_json(const ModelFit& m) {
+  nlohmann::json j = nlohmann::json::object();
+  for (std::size_t i = 0; i < m.parameters.size(); ++i) {
+    nlohmann::json p;
+    p["value"] = m.fit.best[i];
+    if (!m.fit.standard_error.empty()) p["standard_error"] = m.fit.standard_error[i];
+    else p["standard_error"] = nullptr;
+    p["units"] = m.parameters[i].units;
+    j[m.parameters[i].name] = p;
+  }
+  return j;
+}
+
+nlohmann::json fit_json(const ModelFit& m) {
+  nlohmann::json j;
+  j["model"] = m.name;
+  j["parameters"] = parameters_json(m);
+  j["training_objective"] = m.fit.objective;
+  j["bic"] = m.bic;
+  j["aic"] = m.aic;
+  j["heldout_error"] = m.heldout_error;
+  j["evaluations"] = m.fit.evaluations;
+  j["populations"] = m.fit.populations;
+  if (!m.fit.uncertainty_note.empty()) j["uncertainty_note"] = m.fit.uncertainty_note;
+  return j;
+}
+
+nlohmann::json candidate_json(const CandidateScore& c) {
+  nlohmann::json j;
+  j["mechanism"] = mechanism_name(c.mechanism);
+  j["heldout_gain"] = c.heldout_gain;
+  j["information_criterion_delta"] = c.bic_delta;
+  j["information_criterion"] = "BIC";
+  j["aic_delta"] = c.aic_delta;
+  j["heldout_tests_improved"] = c.heldout_tests_improved;
+  j["significant"] = c.significant;
+  j["parameters"] = parameters_json(c.model);
+  nlohmann::json gain;
+  for (std::size_t m = 0; m < measure_names().size(); ++m) gain[measure_names()[m]] = c.measure_gain[m];
+  j["gain"] = gain;
+  j["fit"] = fit_json(c.model);
+  return j;
+}
+
+std::string number(double v, int precision = 3) {
+  std::ostringstream out;
+  out << std::setprecision(precision) << v;
+  return out.str();
+}
+
+const CandidateScore* find(const std::vector<CandidateScore>& list, const std::string& name) {
+  for (const CandidateScore& c : list) {
+    if (mechanism_name(c.mechanism) == name) return &c;
+  }
+  return nullptr;
+}
+
+void write_histories(const std::filesystem::path& file, const MeasuredSet& set, const std::vector<SimulatedHistory>& baseline,
+                     const std::vector<SimulatedHistory>* extended, const std::string& extended_name) {
+  hdf5::Group root = hdf5::create_file(file);
+  root.attribute("extended_model", extended_name);
+  for (std::size_t t = 0; t < set.tests.size(); ++t) {
+    const MeasuredTest& test = set.tests[t];
+    hdf5::Group g = root.group(test.name);
+    g.attribute("heldout", std::int64_t(std::find(set.heldout.begin(), set.heldout.end(), int(t)) != set.heldout.end()));
+    g.write("time", test.time, "s");
+    std::vector<double> rotation = test.rotation, slide = test.slide;
+    // Masked samples are written as the last valid value before them: a plot shows a flat
+    // stretch, never a NaN.
+    for (std::size_t k = 0; k < rotation.size(); ++k) {
+      if (!test.rotation_valid[k]) rotation[k] = k > 0 ? rotation[k - 1] : 0.0;
+      if (!test.slide_valid[k]) slide[k] = k > 0 ? slide[k - 1] : 0.0;
+    }
+    g.write("measured_rotation", rotation, "rad");
+    g.write("measured_slide", slide, "m");
+    g.write("rotation_valid", test.rotation_valid);
+    g.write("slide_valid", test.slide_valid);
+    g.write("table_acceleration", test.table_acceleration, "m/s^2");
+    g.write("baseline_rotation", baseline[t].rotation, "rad");
+    g.write("baseline_slide", baseline[t].slide, "m");
+    if (extended) {
+      g.write("extended_rotation", (*extended)[t].rotation, "rad");
+      g.write("extended_slide", (*extended)[t].slide, "m");
+    }
+  }
+}
+
+}  // namespace
+
+void write_calibration(const std::filesystem::path& directory, const MeasuredSet& set, const ModelFit& baseline) {
+  std::filesystem::create_directories(directory);
+  nlohmann::json j = fit_json(baseline);
+  j["caskdem_version"] = build_info::version;
+  j["measured_data"] = set.directory.string();
+  for (int t : set.training) j["training_tests"].push_back(set.tests[t].name);
+  for (int t : set.heldout) j["heldout_tests"].push_back(set.tests[t].name);
+  std::ofstream(directory / "calibration.json") << j.dump(2) << "\n";
+}
+
+void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& set, const Diagnosis& d,
+                     InstructionSet isa, bool plots) {
+  std::filesystem::create_directories(directory);
+  nlohmann::json j;
+  j["caskdem_version"] = build_info::version;
+  j["measured_data"] = set.directory.string();
+  j["cause"] = d.cause;
+  j["second_cause"] = d.second_cause.empty() ? nlohmann::json(nullptr) : nlohmann::json(d.second_cause);
+  for (int t : set.training) j["tests"]["training"].push_back(set.tests[t].name);
+  for (int t : set.heldout) j["tests"]["heldout"].push_back(set.tests[t].name);
+  j["data_issues"] = nlohmann::json::array();
+  for (const MeasuredTest& t : set.tests) {
+    for (const std::string& issue : t.issues) j["data_issues"].push_back(issue);
+  }
+  j["baseline"] = fit_json(d.baseline);
+  j["ranking"] = nlohmann::json::array();
+  for (const CandidateScore& c : d.ranking) j["ranking"].push_back(candidate_json(c));
+  const CandidateScore* chosen = find(d.ranking, d.cause);
+  if (chosen) {
+    for (std::size_t m = 0; m < measure_names().size(); ++m) j["gain"][measure_names()[m]] = chosen->measure_gain[m];
+  } else {
+    j["gain"] = nlohmann::json::object();
+  }
+  j["second_ranking"] = nlohmann::json::array();
+  for (const CandidateScore& c : d.second_ranking) j["second_ranking"].push_back(candidate_json(c));
+  for (const StructureRow& r : d.structure) {
+    j["residual_structure"].push_back({{"variable", r.variable}, {"residual", r.residual}, {"statistic", r.statistic},
+                                       {"statistic_name", r.statistic_name}, {"points_to", r.points_to}});
+  }
+  j["baseline_residuals"] = nlohmann::json::object();
+  for (std::size_t t = 0; t < set.tests.size(); ++t) j["baseline_residuals"][set.tests[t].name] = d.baseline.residuals[t];
+  j["measures"] = measure_names();
+  j["wall_time_s"] = d.wall_seconds;
+  std::ofstream(directory / "diagnosis.json") << j.dump(2) << "\n";
+
+  // Histories of the baseline and the chosen model, for the plots.
+  const std::vector<SimulatedHistory> baseline = fitted_histories(set, d.baseline, isa);
+  std::vector<SimulatedHistory> extended;
+  if (chosen) extended = fitted_histories(set, chosen->model, isa);
+  write_histories(directory / "histories.h5", set, baseline, chosen ? &extended : nullptr,
+                  chosen ? chosen->model.name : std::string());
+
+  std::ofstream md(directory / "report.md");
+  md << "# Diagnosis of " << set.directory.filename().string() << "\n\n";
+  md << "**Cause: " << d.cause << "**";
+  if (!d.second_cause.empty()) md << "; a second effect remains: **" << d.second_cause << "**";
+  md << ".\n\n";
+  if (d.cause == "none") {
+    md << "No mechanism improves the prediction of the held-out tests significantly: the baseline model "
+          "disagrees with these data no more than their noise explains.\n\n";
+  } else {
+    md << "Fitted with `" << d.cause << "`, the model predicts the held-out tests (not used for fitting) with "
+       << number(100.0 * chosen->heldout_gain, 3) << " % less error than the calibrated baseline, and its BIC on the "
+       << "training tests is lower by " << number(-chosen->bic_delta, 3) << ".\n\n";
+  }
+  md << "Training tests: ";
+  for (int t : set.training) md << set.tests[t].name << " ";
+  md << "; held-out tests: ";
+  for (int t : set.heldout) md << set.tests[t].name << " ";
+  md << "\n\n";
+  md << "## Data\n\n";
+  bool any_issue = false;
+  for (const MeasuredTest& t : set.tests) {
+    for (const std::string& issue : t.issues) {
+      md << "- " << issue << "\n";
+      any_issue = true;
+    }
+  }
+  if (!any_issue) md << "No imperfections found in the test files.\n";
+  md << "\n## Calibrated baseline\n\n| parameter | value | standard error |\n|---|---|---|\n";
+  for (std::size_t i = 0; i < d.baseline.parameters.size(); ++i) {
+    md << "| " << d.baseline.parameters[i].name << " | " << number(d.baseline.fit.best[i], 4) << " "
+       << d.baseline.parameters[i].units << " | "
+       << (d.baseline.fit.standard_error.empty() ? std::string("-") : number(d.baseline.fit.standard_error[i], 2)) << " |\n";
+  }
+  md << "\n## Where the baseline disagrees (residual structure)\n\n"
+     << "| residual | against | statistic | suggests |\n|---|---|---|---|\n";
+  for (const StructureRow& r : d.structure) {
+    md << "| " << r.residual << " | " << r.variable << " | " << r.statistic_name << " " << number(r.statistic, 3) << " | "
+       << r.points_to << " |\n";
+  }
+  md << "\n![residuals](residuals.png)\n\n## Mechanisms, ranked by held-out gain\n\n"
+     << "| mechanism | held-out gain | BIC delta | held-out tests improved | significant | parameters |\n"
+     << "|---|---|---|---|---|---|\n";
+  for (const CandidateScore& c : d.ranking) {
+    md << "| " << mechanism_name(c.mechanism) << " | " << number(c.heldout_gain, 3) << " | " << number(c.bic_delta, 3)
+       << " | " << c.heldout_tests_improved << "/" << set.heldout.size() << " | " << (c.significant ? "yes" : "no") << " | ";
+    for (std::size_t i = 3; i < c.model.parameters.size(); ++i) {  // the mechanism's own parameters
+      md << c.model.parameters[i].name << " = " << number(c.model.fit.best[i], 3);
+      if (!c.model.fit.standard_error.empty()) md << " +- " << number(c.model.fit.standard_error[i], 2);
+      md << " " << c.model.parameters[i].units << "; ";
+    }
+    md << "|\n";
+  }
+  md << "\n![ranking](ranking.png)\n\n";
+  if (chosen) {
+    md << "## Gain of " << d.cause << " on each error measure (held-out tests)\n\n| measure | gain |\n|---|---|\n";
+    for (std::size_t m = 0; m < measure_names().size(); ++m) {
+      md << "| " << measure_names()[m] << " | " << number(chosen->measure_gain[m], 3) << " |\n";
+    }
+    md << "\n";
+  }
+  if (!d.second_ranking.empty()) {
+    md << "## A second effect on top of " << d.cause << "\n\n| mechanism | held-out gain | BIC delta | significant |\n"
+       << "|---|---|---|---|\n";
+    for (const CandidateScore& c : d.second_ranking) {
+      md << "| " << mechanism_name(c.mechanism) << " | " << number(c.heldout_gain, 3) << " | " << number(c.bic_delta, 3)
+         << " | " << (c.significant ? "yes" : "no") << " |\n";
+    }
+    md << "\n";
+  }
+  md << "## Measured, baseline and extended histories\n\n![histories](histories.png)\n";
+  md.close();
+
+  if (plots) {
+    run_plot_script("plot_diagnosis.py", {(directory / "histories.h5").string(), (directory / "diagnosis.json").string(),
+                                          directory.string()});
+  }
+}
+
+}  // namespace caskdem::diagnosis

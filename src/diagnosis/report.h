@@ -1,0 +1,22 @@
+#pragma once
+// What `caskdem diagnose` writes (README, "Measured data"):
+//   diagnosis.json  cause, second_cause, ranking (each mechanism's heldout_gain,
+//                   information_criterion_delta, fitted parameters with standard errors, gain
+//                   per error measure), baseline, residual structure, data issues
+//   report.md       the same for people, with the plots
+//   histories.h5    measured, baseline and extended rotation and sliding of every test
+//   histories.png, residuals.png, ranking.png (src/plots/plot_diagnosis.py)
+
+#include <filesystem>
+
+#include "diagnosis/diagnose.h"
+
+namespace caskdem::diagnosis {
+
+void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& set, const Diagnosis& diagnosis,
+                     InstructionSet isa, bool plots);
+
+// The baseline calibration alone (`caskdem calibrate-measured`): calibration.json.
+void write_calibration(const std::filesystem::path& directory, const MeasuredSet& set, const ModelFit& baseline);
+
+}  // namespace caskdem::diagnosis

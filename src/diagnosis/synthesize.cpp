@@ -1,0 +1,197 @@
+#include "diagnosis/synthesize.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <numbers>
+
+#include <Random123/boxmuller.hpp>
+#include <Random123/philox.h>
+#include <nlohmann/json.hpp>
+
+#include "core/units.h"
+#include "diagnosis/measured_set.h"
+#include "diagnosis/measures.h"
+#include "diagnosis/test_simulation.h"
+#include "ensemble/sampling.h"
+#include "motion/synthetic.h"
+#include "motion/table_motion.h"
+
+namespace caskdem::diagnosis {
+
+namespace {
+
+constexpr double kSampleStep = 0.005;  // s: 200 Hz, a common data-logger rate
+constexpr double kFreeTime = 2.5;      // s of recording after the motion
+
+const char* kSpecimen = R"(title = "Synthetic shaking-table tests of the 1/3 model cask"
+# Made by `caskdem synthesize-measured`: what the experimenter knows, with nominal values.
+# The true values and any hidden mechanism are in truth.json, which the diagnosis never reads.
+
+[cask]
+shape = "cylinder"
+diameter = "0.95 m"
+height = "2.033 m"
+density = "8.743 g/cm^3"
+half_width = "gyration"
+rounding = "0.5 cm"
+
+[contact]
+normal_stiffness = "2.38e3 bar/cm"
+shear_stiffness = "2.21e3 bar/cm"
+
+[friction]
+law = "constant"
+coefficient = 0.35
+
+[damping]
+ratio = 0.03
+frequency = "135 Hz"
+
+[integration]
+safety_factor = 0.05   # 5 times the paper's step: the tests' rotations change by < 1 % (README, "Time step")
+
+[diagnosis]
+heldout = ["test2", "test5"]
+starts = 6
+evaluations = 50
+seed = 1
+)";
+
+// Uniform in [low, high] from stream `what` of the seed.
+double draw(std::uint64_t seed, std::uint64_t what, double low, double high) {
+  return low + (high - low) * philox_uniform(seed, 0x5717 + what, 0, 0);
+}
+
+// Standard normal number for (test, sample, channel) of the seed (Box-Muller on Philox output).
+double normal(std::uint64_t seed, std::uint64_t test, std::uint64_t sample, std::uint64_t channel) {
+  using Philox = r123::Philox4x32;
+  const Philox::key_type key = {{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)}};
+  const Philox::ctr_type counter = {{static_cast<std::uint32_t>(sample), static_cast<std::uint32_t>(test),
+                                     static_cast<std::uint32_t>(channel), 0x401e}};
+  const Philox::ctr_type out = Philox()(counter, key);
+  const r123::double2 pair = r123::boxmuller((std::uint64_t(out[0]) << 32) | out[1], (std::uint64_t(out[2]) << 32) | out[3]);
+  return pair.x;
+}
+
+struct TestDesign {
+  std::unique_ptr<motion::TableMotion> horizontal;
+  std::unique_ptr<motion::TableMotion> vertical;
+};
+
+std::vector<TestDesign> designs(std::uint64_t seed, bool strong_vertical) {
+  const double g = units::standard_gravity;
+  auto sine = [&](double frequency, double acceleration, double cycles) {
+    const double omega = 2.0 * std::numbers::pi * frequency;
+    return motion::make_sine(acceleration / (omega * omega), frequency, cycles, 1.0);
+  };
+  auto earthquake = [&](std::uint64_t record_seed, double pga, double duration) {
+    motion::SyntheticMotion s;
+    s.seed = record_seed;
+    s.duration = duration;
+    s.time_step = kSampleStep;
+    s.dominant_frequency = 4.0;  // a firm-soil 2.5 Hz prototype motion at 1/3 scale
+    s.high_pass_frequency = 0.4;
+    s.rise_time = 0.8;
+    s.strong_duration = 2.0;
+    s.decay = 1.0;
+    s.pga = pga;
+    return motion::make_record_motion(motion::synthetic_record(s));
+  };
+  // Kinds in pairs, so that the held-out tests (the 2nd and 5th) have training tests like them.
+  std::vector<TestDesign> tests;
+  tests.push_back({sine(1.5, 0.30 * g, 4.0), nullptr});
+  tests.push_back({sine(2.5, 0.45 * g, 6.0), nullptr});
+  tests.push_back({earthquake(seed * 100 + 11, 0.40 * g, 5.0), nullptr});
+  tests.push_back({sine(2.0, 0.50 * g, 5.0), nullptr});
+  tests.push_back({sine(1.2, 0.28 * g, 3.0), nullptr});
+  tests.push_back({earthquake(seed * 100 + 12, 0.45 * g, 5.0), nullptr});
+  tests.push_back({sine(3.0, 0.40 * g, 8.0), nullptr});
+  tests.push_back({sine(2.0, 0.35 * g, 5.0), nullptr});
+  for (std::size_t i = 0; i < tests.size(); ++i) {
+    if (!strong_vertical) {
+      tests[i].vertical = motion::make_still();  // the channel will carry sensor noise only
+      continue;
+    }
+    const double pga = motion::peak_acceleration(*tests[i].horizontal, kSampleStep);
+    const double ratio = draw(seed, 40 + i, 0.5, 0.7);
+    tests[i].vertical = earthquake(seed * 100 + 50 + i, ratio * pga, tests[i].horizontal->duration() + kFreeTime);
+  }
+  return tests;
+}
+
+}  // namespace
+
+SyntheticTruth write_synthetic_measured_set(const std::filesystem::path& directory, const SyntheticSpec& spec) {
+  std::filesystem::create_directories(directory);
+  std::ofstream(directory / "specimen.toml") << kSpecimen;
+  const Case specimen = read_specimen(directory / "specimen.toml", nullptr);
+  auto hidden = [&](Mechanism m) { return std::find(spec.hidden.begin(), spec.hidden.end(), m) != spec.hidden.end(); };
+  const ModelVariant truth(specimen, spec.hidden, true);
+
+  // The true values: the specimen's baseline parameters off their nominal values, and each
+  // hidden mechanism at a value drawn from a range where its effect is visible.
+  std::vector<double> x = truth.reference();
+  const double sign = philox_uniform(spec.seed, 0x5717, 1, 0) < 0.5 ? -1.0 : 1.0;
+  for (std::size_t i = 0; i < truth.parameters().size(); ++i) {
+    const Parameter& p = truth.parameters()[i];
+    double& v = x[i];
+    if (p.name == "friction") v = draw(spec.seed, 1, 0.30, 0.40);
+    else if (p.name == "damping_ratio") v = draw(spec.seed, 2, 0.01, 0.05);
+    else if (p.name == "stiffness_scale") v = draw(spec.seed, 3, 0.7, 1.4);
+    else if (p.name == "kinetic_ratio") v = draw(spec.seed, 4, 0.55, 0.75);
+    else if (p.name == "decay_speed") v = draw(spec.seed, 5, 0.02, 0.10);
+    else if (p.name == "impact_damping") v = draw(spec.seed, 6, 8.0, 20.0);
+    else if (p.name == "eccentricity") v = sign * draw(spec.seed, 7, 0.4, 0.6) * p.high;
+    else if (p.name == "base_camber") v = draw(spec.seed, 8, 0.4, 0.8) * p.high;
+    else if (p.name == "vertical_gain") v = 1.0;
+    else if (p.name == "floor_soft_ratio") v = draw(spec.seed, 9, 0.03, 0.10);
+    else if (p.name == "floor_soft_depth") v = draw(spec.seed, 10, 20.0, 50.0) * p.reference;
+    else if (p.name == "wobble_damping") v = draw(spec.seed, 11, 0.15, 0.30);
+    else if (p.name == "sensor_delay") v = sign * draw(spec.seed, 12, 0.03, 0.06);
+  }
+  const ModelVariant& simulated = truth;
+  const std::vector<double>& x_simulated = x;
+  std::vector<TestDesign> tests = designs(spec.seed, hidden(Mechanism::vertical_excitation));
+  for (std::size_t i = 0; i < tests.size(); ++i) {
+    MeasuredTest clean;
+    clean.time_step = kSampleStep;
+    const auto samples = static_cast<std::size_t>(std::floor((tests[i].horizontal->duration() + kFreeTime) / kSampleStep)) + 1;
+    for (std::size_t k = 0; k < samples; ++k) {
+      const double t = k * kSampleStep;
+      clean.time.push_back(t);
+      clean.table_acceleration.push_back(tests[i].horizontal->acceleration(t));
+      clean.vertical_table_acceleration.push_back(tests[i].vertical->acceleration(t));
+    }
+    clean.has_vertical = true;
+    const SimulatedHistory response = delayed(
+        simulate_test(simulated, clean, {x_simulated}, InstructionSet::automatic)[0], clean.time, simulated.sensor_delay(x_simulated));
+
+    const std::string name = "test" + std::to_string(i + 1);
+    std::ofstream csv(directory / (name + ".csv"));
+    csv << "# synthetic shaking-table test " << name << ": SI units, 200 Hz\n";
+    csv << "t,table_acc,theta,slide,table_acc_v\n";
+    char line[256];
+    for (std::size_t k = 0; k < samples; ++k) {
+      std::snprintf(line, sizeof line, "%.3f,%.9g,%.9g,%.9g,%.9g\n", clean.time[k],
+                    clean.table_acceleration[k] + spec.table_noise * normal(spec.seed, i, k, 0),
+                    response.rotation[k] + spec.rotation_noise * normal(spec.seed, i, k, 1),
+                    response.slide[k] + spec.slide_noise * normal(spec.seed, i, k, 2),
+                    clean.vertical_table_acceleration[k] + spec.table_noise * normal(spec.seed, i, k, 3));
+      csv << line;
+    }
+  }
+
+  SyntheticTruth out;
+  for (Mechanism m : truth.mechanisms()) out.hidden.push_back(mechanism_name(m));
+  for (std::size_t i = 0; i < truth.parameters().size(); ++i) out.parameters.emplace_back(truth.parameters()[i].name, x[i]);
+  nlohmann::json j;
+  j["hidden"] = out.hidden;
+  for (const auto& [name, value] : out.parameters) j["parameters"][name] = value;
+  j["seed"] = spec.seed;
+  j["noise"] = {{"rotation_rad", spec.rotation_noise}, {"slide_m", spec.slide_noise}, {"table_m_s2", spec.table_noise}};
+  std::ofstream(directory / "truth.json") << j.dump(2) << "\n";
+  return out;
+}
+
+}  // namespace caskdem::diagnosis

@@ -1,0 +1,85 @@
+// The lockstep fitter on objectives with known answers: it finds the minimum of a quadratic
+// bowl, evaluates its searches as populations (several points per call), and its standard
+// errors equal the bowl's widths, on linear and logarithmic parameters alike.
+
+#include <cmath>
+#include <mutex>
+
+#include <gtest/gtest.h>
+
+#include "diagnosis/fitting.h"
+
+namespace caskdem::diagnosis {
+namespace {
+
+TEST(Fitting, FindsTheMinimumOfABowlAndItsWidths) {
+  // J = J0 + ((x0 - 3.7)/0.2)^2 + ((ln x1 - ln 2)/0.1)^2 + ((x2 + 1)/0.5)^2 with J0 = N - k, so the
+  // residual variance J*/(N - k) is 1 and the covariance 2 H^-1 is diagonal: 0.2^2, 0.1^2, 0.5^2
+  // (the second in ln x1: a standard error of 2 * 0.1 in x1).
+  const std::vector<Parameter> space = {
+      {"a", "", 0.0, 10.0, false, 5.0}, {"b", "", 0.01, 100.0, true, 1.0}, {"c", "", -5.0, 5.0, false, 0.0}};
+  const int residuals = 20;
+  const double floor = residuals - 3;
+  int calls = 0, points = 0;
+  std::mutex count;
+  const PopulationObjective bowl = [&](const std::vector<std::vector<double>>& population) {
+    {
+      std::lock_guard<std::mutex> lock(count);
+      ++calls;
+      points += static_cast<int>(population.size());
+    }
+    std::vector<double> values;
+    for (const auto& x : population) {
+      const double a = (x[0] - 3.7) / 0.2, b = (std::log(x[1]) - std::log(2.0)) / 0.1, c = (x[2] + 1.0) / 0.5;
+      values.push_back(floor + a * a + b * b + c * c);
+    }
+    return values;
+  };
+  FitOptions options;
+  options.starts = 6;
+  options.evaluations = 120;
+  const FitResult fit = fit_parameters(space, {{5.0, 1.0, 0.0}}, bowl, options, residuals);
+  EXPECT_NEAR(fit.best[0], 3.7, 1e-3);
+  EXPECT_NEAR(fit.best[1], 2.0, 1e-3);
+  EXPECT_NEAR(fit.best[2], -1.0, 1e-3);
+  EXPECT_NEAR(fit.objective, floor, 1e-4);
+  ASSERT_EQ(fit.standard_error.size(), 3u);
+  // Central differences are exact for a quadratic in unit coordinates (x0, x2, ln x1).
+  EXPECT_NEAR(fit.standard_error[0], 0.2, 1e-6);
+  EXPECT_NEAR(fit.standard_error[1], 2.0 * 0.1, 1e-3);
+  EXPECT_NEAR(fit.standard_error[2], 0.5, 1e-6);
+  // The six searches ran in lockstep: populations of several points.
+  EXPECT_EQ(fit.evaluations, points);
+  EXPECT_EQ(fit.populations, calls);
+  EXPECT_GT(double(points) / calls, 3.0);
+}
+
+TEST(Fitting, SameResultEveryTime) {
+  const std::vector<Parameter> space = {{"a", "", -2.0, 2.0, false, 0.0}, {"b", "", -2.0, 2.0, false, 0.0}};
+  // A wavy objective with several local minima: the searches' order must not depend on threads.
+  const PopulationObjective wavy = [](const std::vector<std::vector<double>>& population) {
+    std::vector<double> values;
+    for (const auto& x : population) {
+      values.push_back(x[0] * x[0] + x[1] * x[1] + 0.5 * std::sin(5.0 * x[0]) * std::cos(4.0 * x[1]));
+    }
+    return values;
+  };
+  FitOptions options;
+  options.starts = 8;
+  options.evaluations = 80;
+  const FitResult first = fit_parameters(space, {{1.0, 1.0}}, wavy, options, 10);
+  for (int repeat = 0; repeat < 5; ++repeat) {
+    const FitResult again = fit_parameters(space, {{1.0, 1.0}}, wavy, options, 10);
+    EXPECT_EQ(again.best, first.best);
+    EXPECT_EQ(again.evaluations, first.evaluations);
+  }
+}
+
+TEST(Fitting, UnitCoordinatesRoundTrip) {
+  const Parameter linear{"x", "", -3.0, 5.0, false, 0.0}, logarithmic{"y", "", 1e-3, 10.0, true, 1.0};
+  for (double v : {-3.0, -1.0, 0.0, 4.9}) EXPECT_NEAR(from_unit(linear, to_unit(linear, v)), v, 1e-12);
+  for (double v : {1e-3, 0.02, 1.0, 9.0}) EXPECT_NEAR(from_unit(logarithmic, to_unit(logarithmic, v)) / v, 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace caskdem::diagnosis
