@@ -12,5 +12,6 @@ void add_motion(CLI::App& app);
 void add_similarity(CLI::App& app);
 void add_ensemble(CLI::App& app);
 void add_plot(CLI::App& app);
+void add_diagnose(CLI::App& app);
 
 }  // namespace caskdem::commands

@@ -20,6 +20,7 @@ int main(int argc, char** argv) {
   caskdem::commands::add_similarity(app);
   caskdem::commands::add_ensemble(app);
   caskdem::commands::add_plot(app);
+  caskdem::commands::add_diagnose(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,61 @@
+#!/bin/sh
+# Success and false-alarm rates of `caskdem diagnose` on synthetic measured data: for each
+# mechanism (and for none), SEEDS data sets from `caskdem synthesize-measured`, each diagnosed
+# from the data alone. One CSV row per data set, then the rates per hidden effect.
+#
+#   bench/diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS]
+#
+# The seeds here start at 1001 so they are not the ones the CI tests use (101..110). About
+# 1.5 to 2 minutes per data set on 2 cores. Appends to OUT_CSV, so a stopped run resumes.
+set -eu
+build=${1:?usage: diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS]}
+out=${2:?usage: diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS]}
+seeds=${3:-20}
+first=${4:-1001}
+effects=${5:-"none velocity_dependent_friction amplitude_dependent_restitution eccentric_mass base_imperfection vertical_excitation floor_compliance out_of_plane_loss sensor_delay"}
+caskdem="$build/src/caskdem"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+[ -s "$out" ] || echo "hidden,seed,cause,second_cause,hidden_gain,hidden_bic_delta,hidden_significant,top,top_gain,wall_s" >"$out"
+
+i=0
+while [ "$i" -lt "$seeds" ]; do
+  seed=$((first + i))
+  for effect in $effects; do
+    if grep -q "^$effect,$seed," "$out"; then continue; fi
+    dir="$work/$effect-$seed"
+    if [ "$effect" = none ]; then
+      "$caskdem" synthesize-measured --out "$dir" --seed "$seed" >/dev/null
+    else
+      "$caskdem" synthesize-measured --out "$dir" --seed "$seed" --effect "$effect" >/dev/null
+    fi
+    "$caskdem" diagnose "$dir" --out "$dir/diagnosis" --quiet --no-plot >/dev/null
+    /usr/bin/python3 - "$dir/diagnosis/diagnosis.json" "$effect" "$seed" >>"$out" <<'PY'
+import json, sys
+d = json.load(open(sys.argv[1]))
+effect, seed = sys.argv[2], sys.argv[3]
+rank = d["ranking"]
+hidden = next((r for r in rank if r["mechanism"] == effect), None)
+top = rank[0]
+fields = [effect, seed, d["cause"], d["second_cause"] or "",
+          "%.4f" % hidden["heldout_gain"] if hidden else "", "%.2f" % hidden["information_criterion_delta"] if hidden else "",
+          str(hidden["significant"]).lower() if hidden else "", top["mechanism"], "%.4f" % top["heldout_gain"],
+          "%.1f" % d["wall_time_s"]]
+print(",".join(fields))
+PY
+    tail -n 1 "$out"
+    rm -rf "$dir"
+  done
+  i=$((i + 1))
+done
+
+/usr/bin/python3 - "$out" <<'PY'
+import csv, sys
+rows = list(csv.DictReader(open(sys.argv[1])))
+print("%-34s %6s %8s %12s" % ("hidden", "sets", "correct", "rate"))
+for effect in dict.fromkeys(r["hidden"] for r in rows):
+    mine = [r for r in rows if r["hidden"] == effect]
+    right = sum(r["cause"] == effect for r in mine)
+    label = "none (false alarms: %d)" % (len(mine) - right) if effect == "none" else effect
+    print("%-34s %6d %8d %11.0f%%" % (label, len(mine), right, 100.0 * right / len(mine)))
+PY

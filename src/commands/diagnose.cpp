@@ -1,0 +1,134 @@
+// Measured data in: caskdem calibrate-measured DIR, caskdem diagnose DIR, and
+// caskdem synthesize-measured (synthetic data with hidden mechanisms, for trying it out).
+
+#include <filesystem>
+#include <iomanip>
+#include <iostream>
+#include <sstream>
+
+#include "commands/commands.h"
+#include "core/error.h"
+#include "diagnosis/report.h"
+#include "diagnosis/synthesize.h"
+
+namespace caskdem::commands {
+
+namespace {
+
+diagnosis::DiagnosisOptions options_for(int threads, bool quiet) {
+  diagnosis::DiagnosisOptions o;
+  o.threads = threads;
+  if (!quiet) o.log = [](const std::string& line) { std::cerr << "diagnose: " << line << "\n"; };
+  return o;
+}
+
+void print_fit(const diagnosis::ModelFit& m) {
+  for (std::size_t i = 0; i < m.parameters.size(); ++i) {
+    std::cout << "  " << std::left << std::setw(20) << m.parameters[i].name << std::setprecision(4) << m.fit.best[i];
+    if (!m.fit.standard_error.empty()) std::cout << " +- " << std::setprecision(2) << m.fit.standard_error[i];
+    std::cout << " " << m.parameters[i].units << "\n";
+  }
+}
+
+}  // namespace
+
+void add_diagnose(CLI::App& app) {
+  {
+    struct Options {
+      std::string directory, out;
+      int threads = 0;
+      bool quiet = false;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* cmd = app.add_subcommand("calibrate-measured",
+                                       "Fit the baseline model (friction, damping, stiffness scale) to measured tests");
+    cmd->add_option("directory", options->directory, "Measured-data directory (specimen.toml and CSV files)")->required();
+    cmd->add_option("--out", options->out, "Output directory (default DIRECTORY/calibration)");
+    cmd->add_option("--threads", options->threads, "OpenMP threads")->check(CLI::NonNegativeNumber);
+    cmd->add_flag("--quiet", options->quiet, "No progress lines");
+    cmd->callback([options]() {
+      const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
+      const diagnosis::ModelFit fit = diagnosis::calibrate_baseline(set, options_for(options->threads, options->quiet));
+      std::cout << "baseline fitted on " << set.training.size() << " tests (" << fit.fit.evaluations
+                << " evaluations in " << fit.fit.populations << " lockstep populations)\n";
+      print_fit(fit);
+      std::cout << "held-out error  " << fit.heldout_error << " (RMS of scaled residuals)\n";
+      const std::filesystem::path out =
+          options->out.empty() ? std::filesystem::path(options->directory) / "calibration" : std::filesystem::path(options->out);
+      diagnosis::write_calibration(out, set, fit);
+      std::cout << "wrote           " << (out / "calibration.json").string() << "\n";
+    });
+  }
+  {
+    struct Options {
+      std::string directory, out;
+      int threads = 0;
+      bool quiet = false, no_plot = false;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* cmd = app.add_subcommand(
+        "diagnose", "What the model gets wrong on measured tests, its most likely physical cause, and the gain");
+    cmd->add_option("directory", options->directory, "Measured-data directory (specimen.toml and CSV files)")->required();
+    cmd->add_option("--out", options->out, "Output directory (default DIRECTORY/diagnosis)");
+    cmd->add_option("--threads", options->threads, "OpenMP threads")->check(CLI::NonNegativeNumber);
+    cmd->add_flag("--quiet", options->quiet, "No progress lines");
+    cmd->add_flag("--no-plot", options->no_plot, "Do not make the PNGs");
+    cmd->callback([options]() {
+      const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
+      for (const diagnosis::MeasuredTest& t : set.tests) {
+        for (const std::string& issue : t.issues) std::cout << "data            " << issue << "\n";
+      }
+      const diagnosis::Diagnosis d = diagnosis::diagnose(set, options_for(options->threads, options->quiet));
+      std::cout << "cause           " << d.cause << "\n";
+      if (!d.second_cause.empty()) std::cout << "second effect   " << d.second_cause << "\n";
+      std::cout << std::left << std::setw(34) << "mechanism" << std::setw(15) << "held-out gain" << std::setw(12)
+                << "BIC delta" << "significant\n";
+      for (const diagnosis::CandidateScore& c : d.ranking) {
+        std::cout << std::left << std::setw(34) << diagnosis::mechanism_name(c.mechanism) << std::setw(15)
+                  << std::setprecision(3) << c.heldout_gain << std::setw(12) << c.bic_delta
+                  << (c.significant ? "yes" : "no") << "\n";
+      }
+      const std::filesystem::path out =
+          options->out.empty() ? std::filesystem::path(options->directory) / "diagnosis" : std::filesystem::path(options->out);
+      diagnosis::write_diagnosis(out, set, d, InstructionSet::automatic, !options->no_plot);
+      std::cout << "wall time       " << std::setprecision(4) << d.wall_seconds << " s\n";
+      std::cout << "wrote           " << out.string() << "/ (diagnosis.json, report.md"
+                << (options->no_plot ? "" : ", PNGs") << ")\n";
+    });
+  }
+  {
+    struct Options {
+      std::string out, effects;
+      std::uint64_t seed = 1;
+    };
+    auto options = std::make_shared<Options>();
+    CLI::App* cmd = app.add_subcommand(
+        "synthesize-measured", "Write synthetic measured tests of the 1/3 model cask with hidden mechanisms");
+    cmd->add_option("--out", options->out, "Directory to write")->required();
+    cmd->add_option("--effect", options->effects, "Hidden mechanisms, comma separated (default: none)");
+    cmd->add_option("--seed", options->seed, "Seed of the true values and the noise");
+    cmd->callback([options]() {
+      diagnosis::SyntheticSpec spec;
+      spec.seed = options->seed;
+      std::stringstream list(options->effects);
+      std::string name;
+      while (std::getline(list, name, ',')) {
+        if (name.empty()) continue;
+        const auto m = diagnosis::parse_mechanism(name);
+        if (!m) {
+          std::string known;
+          for (diagnosis::Mechanism k : diagnosis::all_mechanisms()) known.append(" ").append(diagnosis::mechanism_name(k));
+          throw InputError("--effect: unknown mechanism \"" + name + "\"; expected one of:" + known);
+        }
+        spec.hidden.push_back(*m);
+      }
+      const diagnosis::SyntheticTruth truth = diagnosis::write_synthetic_measured_set(options->out, spec);
+      std::cout << "wrote           " << options->out << "/ (specimen.toml, test1.csv ... test8.csv, truth.json)\n";
+      std::cout << "hidden          " << (truth.hidden.empty() ? std::string("none") : truth.hidden.front());
+      for (std::size_t i = 1; i < truth.hidden.size(); ++i) std::cout << ", " << truth.hidden[i];
+      std::cout << "\n";
+    });
+  }
+}
+
+}  // namespace caskdem::commands
