@@ -12,7 +12,7 @@ namespace caskdem::diagnosis {
 namespace {
 
 // The tolerances every model of a diagnosis is judged by: from the measurements, widened by
-// each test's own predictability at the specimen's nominal parameters.
+// each test's own predictability around the specimen's nominal parameters.
 constexpr int kPredictabilityRealisations = 8;
 
 std::vector<TestReference> references_of(const MeasuredSet& set) {

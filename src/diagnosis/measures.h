@@ -23,7 +23,8 @@
 //  - what the test allows a model to predict at all: rocking is chaotic, and a table channel
 //    known only to its noise level leaves some measures of some tests undetermined. The
 //    spread of each measure over simulations whose input is the measured table channel plus
-//    fresh noise at its estimated level (predictability()) is that part; without it a fit
+//    fresh noise at its estimated level, with the baseline parameters moved by a few percent
+//    (src/diagnosis/predictability.cpp), is that part; without it a fit
 //    chases the noise's accidents and the true parameters score worse than wrong ones.
 
 #include <string>
