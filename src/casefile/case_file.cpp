@@ -53,8 +53,6 @@ void reject_keys(TableReader& t, const std::string& law, std::initializer_list<s
   }
 }
 
-}  // namespace
-
 void read_cask(TableReader& root, Case& c) {
   TableReader t = root.table("cask");
   c.cask.shape = t.choice("shape", {"cylinder", "polygon"});
@@ -187,6 +185,8 @@ void read_limits(TableReader& root, Case& c) {
   t.reject_unknown_keys();
 }
 
+}  // namespace
+
 MotionSpec read_motion(TableReader& t) {
   MotionSpec m;
   m.where = t.file().string() + ":" + std::to_string(t.line_of("kind"));
@@ -282,13 +282,7 @@ std::unique_ptr<motion::TableMotion> make_motion(const MotionSpec& spec) {
   return motion::make_still();
 }
 
-Case load_case(const std::filesystem::path& file) {
-  const toml::table document = parse_toml_file(file);
-  TableReader root(document, file, "");
-  Case c;
-  c.file = file;
-  c.name = file.stem().string();
-  c.title = root.optional_string("title").value_or(c.name);
+void read_cask_and_contact(TableReader& root, Case& c) {
   read_cask(root, c);
   const RealisationParameters mass_properties = nominal_parameters(c.model);
   c.parameters.mass = mass_properties.mass;
@@ -299,6 +293,16 @@ Case load_case(const std::filesystem::path& file) {
   read_damping(root, c);
   read_integration(root, c);
   read_limits(root, c);
+}
+
+Case load_case(const std::filesystem::path& file) {
+  const toml::table document = parse_toml_file(file);
+  TableReader root(document, file, "");
+  Case c;
+  c.file = file;
+  c.name = file.stem().string();
+  c.title = root.optional_string("title").value_or(c.name);
+  read_cask_and_contact(root, c);
   if (root.has_table("motion")) {
     TableReader t = root.table("motion");
     c.horizontal = read_motion(t);

@@ -80,13 +80,9 @@ struct Case {
 
 Case load_case(const std::filesystem::path& file);
 
-// The sections an ensemble file shares with a case file.
-void read_cask(TableReader& root, Case& c);
-void read_contact(TableReader& root, Case& c);
-void read_friction(TableReader& root, Case& c);
-void read_damping(TableReader& root, Case& c);
-void read_integration(TableReader& root, Case& c);
-void read_limits(TableReader& root, Case& c);
+// The sections a case file shares with an ensemble file and a measured specimen: the cask
+// (with its nominal mass properties), contact, friction, damping, integration and limits.
+void read_cask_and_contact(TableReader& root, Case& c);
 MotionSpec read_motion(TableReader& table);
 
 }  // namespace caskdem

@@ -228,8 +228,7 @@ std::vector<StructureRow> residual_structure(const MeasuredSet& set, const std::
     const MeasuredTest& test = set.tests[t];
     amplitude.push_back(references[t].measured.peak_rotation / model.stability_angle);
     sliding_speed.push_back(peak_rate(test.slide, test.slide_valid, test.time_step));
-    impact_speed.push_back(test.has_angular_velocity ? peak_rate(test.rotation, test.rotation_valid, test.time_step)
-                                                     : peak_rate(test.rotation, test.rotation_valid, test.time_step));
+    impact_speed.push_back(peak_rate(test.rotation, test.rotation_valid, test.time_step));
     double v = 0.0;
     if (test.has_vertical) {
       for (double a : test.vertical_table_acceleration) v += a * a;

@@ -13,16 +13,7 @@ Case read_specimen(const std::filesystem::path& specimen, DiagnosisSettings* set
   c.file = specimen;
   c.name = specimen.parent_path().filename().string();
   c.title = root.optional_string("title").value_or(c.name);
-  read_cask(root, c);
-  const RealisationParameters mass = nominal_parameters(c.model);
-  c.parameters.mass = mass.mass;
-  c.parameters.inertia = mass.inertia;
-  c.parameters.centre_of_mass = mass.centre_of_mass;
-  read_contact(root, c);
-  read_friction(root, c);
-  read_damping(root, c);
-  read_integration(root, c);
-  read_limits(root, c);
+  read_cask_and_contact(root, c);
   if (c.model.friction_law != FrictionLaw::constant) {
     root.fail("friction", "the diagnosis starts from constant friction (law = \"constant\"); velocity-dependent "
                           "friction is one of the mechanisms it tests");

@@ -41,6 +41,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace caskdem::diagnosis {
 namespace {
@@ -82,13 +83,6 @@ using Series = std::vector<double>;  // NaN where a sample is missing
 using Mask = std::vector<std::uint8_t>;
 
 // ---- text --------------------------------------------------------------------------------
-
-std::string_view trim(std::string_view s) {
-  const auto is_space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
-  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
-  return s;
-}
 
 std::string lower(std::string_view s) {
   std::string out(s);
@@ -144,35 +138,8 @@ class Reporter {
 
 // ---- lines and fields ---------------------------------------------------------------------
 
-// The file's lines, without line ends (LF or CRLF) and without a UTF-8 byte-order mark.
 std::vector<std::string> read_lines(const Reporter& report) {
-  const path& file = report.file();
-  std::error_code ec;
-  const auto status = std::filesystem::status(file, ec);
-  if (!std::filesystem::exists(status)) report.fail(0, "no such file; expected the path of a measured-test CSV file");
-  if (std::filesystem::is_directory(status)) report.fail(0, "is a directory; expected a measured-test CSV file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) report.fail(0, "cannot be opened for reading; expected a readable measured-test CSV file");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) report.fail(0, "could not be read; expected a readable measured-test CSV file");
-
-  if (text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF"))
-    report.fail(1, "the file is UTF-16 text; expected ASCII or UTF-8 text");
-  if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
-
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    std::string line = text.substr(start, end - start);
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.find('\0') != std::string::npos)
-      report.fail(static_cast<long>(lines.size() + 1), "binary data (a NUL byte); expected a text file");
-    lines.push_back(std::move(line));
-    start = end + 1;
-  }
-  return lines;
+  return read_text_lines(report.file(), "a measured-test CSV file");
 }
 
 bool is_skipped(std::string_view line) {
@@ -283,21 +250,9 @@ struct Columns {
 
 bool is_missing_text(std::string_view field) { return field.empty() || lower(field) == "nan"; }
 
-// The whole field as a double (a leading '+' allowed); nullopt when it is not a number.
-std::optional<double> parse_number(std::string_view field) {
-  if (!field.empty() && field.front() == '+') field.remove_prefix(1);
-  double value = 0.0;
-  const char* last = field.data() + field.size();
-  const auto [end, error] = std::from_chars(field.data(), last, value);
-  if (field.empty() || end != last) return std::nullopt;
-  if (error == std::errc::result_out_of_range) return std::numeric_limits<double>::infinity();
-  if (error != std::errc()) return std::nullopt;
-  return value;
-}
-
 double parse_value(const Reporter& report, long line_number, Channel channel, std::string_view field) {
   if (is_missing_text(field)) return kMissing;
-  const auto value = parse_number(field);
+  const auto value = parse_double(field);
   const std::string found = "found " + in_quotes(field) + " in the column " + in_quotes(kChannels[channel].name);
   // A ';'-separated file from a spreadsheet may use decimal commas: say so.
   const std::string hint = field.find(',') != std::string_view::npos ? " (with a decimal point, not a comma)" : "";

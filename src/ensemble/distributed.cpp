@@ -1,10 +1,8 @@
 #include "ensemble/distributed.h"
 
 #include <mpi.h>
-#include <omp.h>
 
 #include <algorithm>
-#include <chrono>
 #include <cstdio>
 #include <cstdlib>
 
@@ -63,21 +61,11 @@ void MpiSession::abort(const std::string& message) const {
 }
 
 ExecuteReport execute_ensemble_distributed(const EnsemblePlan& plan, const ExecuteOptions& options, const MpiSession& mpi) {
-  const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
   const bool root = mpi.rank() == 0;
-  double earlier_wall = 0.0;
   // Every rank reads the checkpoint itself, so all agree on what is left to do.
-  EnsembleResults results = options.resume ? read_ensemble_results(options.output, plan, &earlier_wall)
-                                           : EnsembleResults(plan);
-  RunInformation run;
-  run.instruction_set = instruction_set_name(options.isa == InstructionSet::automatic ? best_instruction_set() : options.isa);
-  run.threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-  auto checkpoint = [&](const std::vector<LimitStateSummary>* summaries) {
-    run.wall_seconds = earlier_wall + elapsed();
-    write_ensemble_file(options.output, plan, results, run, summaries);
-  };
-  if (root) checkpoint(nullptr);
+  ResultFile file(plan, options);
+  EnsembleResults& results = file.results();
+  if (root) file.write(nullptr);
 
   // Contiguous slices, one per rank, of the pending realisations taken stripe by stripe in
   // turn (position 0 of every stripe, then position 1, ...): slices of the plain index order
@@ -99,12 +87,12 @@ ExecuteReport execute_ensemble_distributed(const EnsemblePlan& plan, const Execu
 
   // Rounds of a few blocks per thread: enough work between gathers to keep every thread busy,
   // often enough for progress and checkpoints.
-  const int per_round = 4 * run.threads;
+  const int per_round = 4 * file.run().threads;
   int rounds = static_cast<int>((blocks.size() + per_round - 1) / per_round);
   MPI_Allreduce(MPI_IN_PLACE, &rounds, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
 
   Progress progress(results.size, results.completed_count(), root && options.progress);
-  double last_checkpoint = elapsed();
+  double last_checkpoint = file.elapsed();
   ExecuteReport report;
   std::vector<int> counts(mpi.size()), displacements(mpi.size());
   for (int round = 0; round < rounds; ++round) {
@@ -113,7 +101,7 @@ ExecuteReport execute_ensemble_distributed(const EnsemblePlan& plan, const Execu
     const std::vector<WorkBlock> these(blocks.begin() + begin, blocks.begin() + end);
     std::vector<double> packed;
     try {
-      run_blocks(plan, these, options.isa, run.threads,
+      run_blocks(plan, these, options.isa, file.run().threads,
                  [&](const WorkBlock& block, const std::vector<RealisationOutcome>& outcomes) {
                    for (std::size_t l = 0; l < block.indices.size(); ++l) pack(block.indices[l], outcomes[l], packed);
                  });
@@ -141,16 +129,16 @@ ExecuteReport execute_ensemble_distributed(const EnsemblePlan& plan, const Execu
       ++report.realisations_run;
     }
     progress.update(results.completed_count());
-    if (elapsed() - last_checkpoint >= plan.spec().checkpoint_interval) {
-      checkpoint(nullptr);
-      last_checkpoint = elapsed();
+    if (file.elapsed() - last_checkpoint >= plan.spec().checkpoint_interval) {
+      file.write(nullptr);
+      last_checkpoint = file.elapsed();
     }
   }
   if (root) {
     progress.finish();
     report.limit_states = analyse(plan, results);
-    checkpoint(&report.limit_states);
-    report.wall_seconds = run.wall_seconds;
+    file.write(&report.limit_states);
+    report.wall_seconds = file.run().wall_seconds;
   }
   return report;
 }

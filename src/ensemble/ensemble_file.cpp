@@ -103,16 +103,7 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
   c.file = file;
   c.name = e.name;
   c.title = e.title;
-  read_cask(root, c);
-  const RealisationParameters mass = nominal_parameters(c.model);
-  c.parameters.mass = mass.mass;
-  c.parameters.inertia = mass.inertia;
-  c.parameters.centre_of_mass = mass.centre_of_mass;
-  read_contact(root, c);
-  read_friction(root, c);
-  read_damping(root, c);
-  read_integration(root, c);
-  read_limits(root, c);
+  read_cask_and_contact(root, c);
   if (root.has_table("free_vibration")) {
     TableReader t = root.table("free_vibration");
     c.free_vibration.initial_tilt_ratio =

@@ -1,6 +1,5 @@
 #include "ensemble/execute.h"
 
-#include <chrono>
 
 #include <omp.h>
 
@@ -9,28 +8,36 @@
 
 namespace caskdem {
 
+ResultFile::ResultFile(const EnsemblePlan& plan, const ExecuteOptions& options)
+    : plan_(plan),
+      output_(options.output),
+      results_(options.resume ? read_ensemble_results(options.output, plan, &earlier_wall_) : EnsembleResults(plan)) {
+  run_.instruction_set =
+      instruction_set_name(options.isa == InstructionSet::automatic ? best_instruction_set() : options.isa);
+  run_.threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+}
+
+double ResultFile::elapsed() const {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+}
+
+void ResultFile::write(const std::vector<LimitStateSummary>* summaries) {
+  run_.wall_seconds = earlier_wall_ + elapsed();
+  write_ensemble_file(output_, plan_, results_, run_, summaries);
+}
+
 ExecuteReport execute_ensemble(const EnsemblePlan& plan, const ExecuteOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
-  auto elapsed = [&] { return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(); };
-  double earlier_wall = 0.0;
-  EnsembleResults results = options.resume ? read_ensemble_results(options.output, plan, &earlier_wall)
-                                           : EnsembleResults(plan);
-  RunInformation run;
-  run.instruction_set = instruction_set_name(options.isa == InstructionSet::automatic ? best_instruction_set() : options.isa);
-  run.threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-  auto checkpoint = [&](const std::vector<LimitStateSummary>* summaries) {
-    run.wall_seconds = earlier_wall + elapsed();
-    write_ensemble_file(options.output, plan, results, run, summaries);
-  };
+  ResultFile file(plan, options);
+  EnsembleResults& results = file.results();
   // The file exists, valid and resumable, from the first moment.
-  checkpoint(nullptr);
+  file.write(nullptr);
 
   const std::vector<WorkBlock> blocks = make_blocks(plan, results.pending(), plan.spec().block_lanes);
   Progress progress(results.size, results.completed_count(), options.progress);
   std::int64_t done = results.completed_count();
-  double last_checkpoint = elapsed();
+  double last_checkpoint = file.elapsed();
   ExecuteReport report;
-  run_blocks(plan, blocks, options.isa, run.threads,
+  run_blocks(plan, blocks, options.isa, file.run().threads,
              [&](const WorkBlock& block, const std::vector<RealisationOutcome>& outcomes) {
                for (std::size_t l = 0; l < block.indices.size(); ++l) {
                  results.record(block.indices[l], outcomes[l], plan.stability_angle());
@@ -38,15 +45,15 @@ ExecuteReport execute_ensemble(const EnsemblePlan& plan, const ExecuteOptions& o
                done += static_cast<std::int64_t>(block.indices.size());
                report.realisations_run += static_cast<std::int64_t>(block.indices.size());
                progress.update(done);
-               if (elapsed() - last_checkpoint >= plan.spec().checkpoint_interval) {
-                 checkpoint(nullptr);
-                 last_checkpoint = elapsed();
+               if (file.elapsed() - last_checkpoint >= plan.spec().checkpoint_interval) {
+                 file.write(nullptr);
+                 last_checkpoint = file.elapsed();
                }
              });
   progress.finish();
   report.limit_states = analyse(plan, results);
-  checkpoint(&report.limit_states);
-  report.wall_seconds = run.wall_seconds;
+  file.write(&report.limit_states);
+  report.wall_seconds = file.run().wall_seconds;
   return report;
 }
 

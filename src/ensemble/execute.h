@@ -3,6 +3,7 @@
 // pending realisations on the threaded SIMD engine, checkpoint the file every few seconds,
 // and finish with the fragility analysis.
 
+#include <chrono>
 #include <filesystem>
 #include <vector>
 
@@ -27,5 +28,27 @@ struct ExecuteReport {
 };
 
 ExecuteReport execute_ensemble(const EnsemblePlan& plan, const ExecuteOptions& options);
+
+// What an execution keeps beside its result file, on one process or on each MPI rank: the
+// results so far (fresh, or read back from the file with --resume), how the run is made, and
+// the wall time, carried over a resume.
+class ResultFile {
+ public:
+  ResultFile(const EnsemblePlan& plan, const ExecuteOptions& options);
+  EnsembleResults& results() { return results_; }
+  const RunInformation& run() const { return run_; }
+  double elapsed() const;  // s since this execution started
+  // Writes the file as it stands (atomically; src/ensemble/results.h), with the limit states
+  // when the run is complete.
+  void write(const std::vector<LimitStateSummary>* summaries);
+
+ private:
+  const EnsemblePlan& plan_;
+  std::filesystem::path output_;
+  std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
+  double earlier_wall_ = 0.0;
+  EnsembleResults results_;
+  RunInformation run_;
+};
 
 }  // namespace caskdem

@@ -30,6 +30,7 @@
 #include <system_error>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "core/units.h"
 #include "motion/record.h"
 
@@ -42,13 +43,6 @@ using std::filesystem::path;
 constexpr std::size_t header_search_lines = 8;
 // Sampling uniformity demanded of a time column (relative to the step), as record.h states.
 constexpr double step_tolerance = 1e-6;
-
-std::string_view trim(std::string_view s) {
-  const auto is_space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
-  while (!s.empty() && is_space(s.front())) s.remove_prefix(1);
-  while (!s.empty() && is_space(s.back())) s.remove_suffix(1);
-  return s;
-}
 
 std::string upper(std::string_view s) {
   std::string out(s);
@@ -76,47 +70,15 @@ std::string number_text(double x) {
 // beyond the range of a double, as infinity.
 std::optional<double> parse_number(std::string_view token) {
   token = trim(token);
-  if (!token.empty() && token.front() == '+') token.remove_prefix(1);
-  if (token.empty() || token.size() > 64) return std::nullopt;
+  if (token.size() > 64) return std::nullopt;
   std::array<char, 64> buffer{};
   std::transform(token.begin(), token.end(), buffer.begin(), [](char c) { return c == 'd' || c == 'D' ? 'e' : c; });
-  const char* first = buffer.data();
-  const char* last = first + token.size();
-  double value = 0.0;
-  const auto [end, error] = std::from_chars(first, last, value);
-  if (end != last) return std::nullopt;
-  if (error == std::errc::result_out_of_range) return std::numeric_limits<double>::infinity();
-  if (error != std::errc()) return std::nullopt;
-  return value;
+  return parse_double(std::string_view(buffer.data(), token.size()));
 }
 
-// The file's lines, without line ends (LF or CRLF) and without a UTF-8 byte-order mark.
+// The file's lines (core/text.h); a file with none but blank lines is an error here.
 std::vector<std::string> read_lines(const path& file) {
-  std::error_code ec;
-  const auto status = std::filesystem::status(file, ec);
-  if (!std::filesystem::exists(status)) fail_at(file, 0, "no such file; expected the path of an acceleration record");
-  if (std::filesystem::is_directory(status)) fail_at(file, 0, "is a directory; expected an acceleration record file");
-  std::ifstream in(file, std::ios::binary);
-  if (!in) fail_at(file, 0, "cannot be opened for reading; expected a readable acceleration record file");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (in.bad()) fail_at(file, 0, "could not be read; expected a readable acceleration record file");
-
-  if (text.starts_with("\xFF\xFE") || text.starts_with("\xFE\xFF"))
-    fail_at(file, 1, "the file is UTF-16 text; expected ASCII or UTF-8 text");
-  if (text.starts_with("\xEF\xBB\xBF")) text.erase(0, 3);
-
-  std::vector<std::string> lines;
-  std::size_t start = 0;
-  while (start < text.size()) {
-    std::size_t end = text.find('\n', start);
-    if (end == std::string::npos) end = text.size();
-    std::string line = text.substr(start, end - start);
-    if (!line.empty() && line.back() == '\r') line.pop_back();
-    if (line.find('\0') != std::string::npos)
-      fail_at(file, static_cast<long>(lines.size() + 1), "binary data (a NUL byte); expected a text file");
-    lines.push_back(std::move(line));
-    start = end + 1;
-  }
+  const std::vector<std::string> lines = read_text_lines(file, "an acceleration record file");
   const bool blank = std::all_of(lines.begin(), lines.end(), [](const std::string& l) { return trim(l).empty(); });
   if (blank) fail_at(file, 0, "the file is empty; expected an acceleration record (PEER .AT2 or columns of numbers)");
   return lines;

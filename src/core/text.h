@@ -1,0 +1,25 @@
+#pragma once
+// Reading the text files users bring (accelerograms, measured tests): one place that turns a
+// file into lines and a token into a number, with the same checks and messages for both.
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace caskdem {
+
+// Without leading and trailing white space.
+std::string_view trim(std::string_view s);
+
+// The file's lines, without line ends (LF or CRLF) and without a UTF-8 byte-order mark. A
+// missing, unreadable, UTF-16 or binary file is an InputError naming the file (and line) and
+// saying that `expected` was expected (e.g. "a measured-test CSV file").
+std::vector<std::string> read_text_lines(const std::filesystem::path& file, const std::string& expected);
+
+// The whole token as a double, a leading '+' allowed; a value beyond the range of a double is
+// infinity and "nan"/"inf" parse (callers reject what is not finite); nullopt otherwise.
+std::optional<double> parse_double(std::string_view token);
+
+}  // namespace caskdem
