@@ -61,11 +61,12 @@ MeasuredSet read_measured_set(const std::filesystem::path& directory) {
     if (entry.is_regular_file() && entry.path().extension() == ".csv") files.push_back(entry.path());
   }
   std::sort(files.begin(), files.end());
+  // Each file first: what is wrong inside a file says more than how many files there are.
+  for (const auto& file : files) set.tests.push_back(read_measured_test(file));
   if (files.size() < 2) {
     throw InputError(located(directory, 0, "found " + std::to_string(files.size()) +
                                                " test files (*.csv); a diagnosis needs at least 2 (one to fit, one to check)"));
   }
-  for (const auto& file : files) set.tests.push_back(read_measured_test(file));
 
   set.vertical_measured = std::all_of(set.tests.begin(), set.tests.end(), [](const MeasuredTest& t) { return t.has_vertical; });
   for (int i = 0; i < static_cast<int>(set.tests.size()); ++i) {

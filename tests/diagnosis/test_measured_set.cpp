@@ -1,0 +1,139 @@
+// read_measured_set on small directories written by the tests: a usable directory splits
+// into the held-out tests named in specimen.toml and the rest; each unusable directory is
+// one InputError that names the file (and key or column) at fault and what was expected.
+// A fault inside a test file is reported as that file's fault, before the count of files.
+
+#include <unistd.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "core/error.h"
+#include "diagnosis/measured_set.h"
+
+namespace caskdem::diagnosis {
+namespace {
+
+namespace fs = std::filesystem;
+using ::testing::AllOf;
+using ::testing::ElementsAre;
+using ::testing::HasSubstr;
+
+const char* kSpecimen = R"(title = "two tests"
+[cask]
+shape = "cylinder"
+diameter = "0.95 m"
+height = "2.033 m"
+density = "8.743 g/cm^3"
+half_width = "gyration"
+rounding = "0.5 cm"
+[contact]
+normal_stiffness = "2.38e3 bar/cm"
+shear_stiffness = "2.21e3 bar/cm"
+[friction]
+law = "constant"
+coefficient = 0.35
+[damping]
+ratio = 0.03
+frequency = "135 Hz"
+)";
+
+// A smooth 2 s test at 100 Hz with the four required channels (or without `slide`).
+std::string test_csv(bool with_slide = true) {
+  std::string text = with_slide ? "t,table_acc,theta,slide\n" : "t,table_acc,theta\n";
+  char line[128];
+  for (int k = 0; k <= 200; ++k) {
+    const double t = 0.01 * k;
+    if (with_slide) {
+      std::snprintf(line, sizeof line, "%.2f,%.9g,%.9g,%.9g\n", t, std::sin(6.0 * t), 1e-3 * std::sin(4.0 * t + 0.2),
+                    1e-4 * t * t);
+    } else {
+      std::snprintf(line, sizeof line, "%.2f,%.9g,%.9g\n", t, std::sin(6.0 * t), 1e-3 * std::sin(4.0 * t + 0.2));
+    }
+    text += line;
+  }
+  return text;
+}
+
+class MeasuredSetDirectory : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    dir_ = fs::temp_directory_path() / ("caskdem_set_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
+    fs::create_directories(dir_);
+  }
+  void TearDown() override {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  void write(const std::string& name, const std::string& text) const {
+    std::ofstream(dir_ / name, std::ios::binary) << text;
+  }
+  std::string error_of() const {
+    try {
+      read_measured_set(dir_);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    ADD_FAILURE() << "no InputError for " << dir_;
+    return {};
+  }
+  fs::path dir_;
+};
+
+TEST_F(MeasuredSetDirectory, TestsSplitIntoTrainingAndTheNamedHeldOutTests) {
+  write("specimen.toml", std::string(kSpecimen) + "[diagnosis]\nheldout = [\"run_b\"]\n");
+  for (const char* name : {"run_a.csv", "run_b.csv", "run_c.csv"}) write(name, test_csv());
+  const MeasuredSet set = read_measured_set(dir_);
+  ASSERT_EQ(set.tests.size(), 3u);
+  EXPECT_EQ(set.tests[1].name, "run_b");
+  EXPECT_THAT(set.training, ElementsAre(0, 2));
+  EXPECT_THAT(set.heldout, ElementsAre(1));
+  EXPECT_FALSE(set.vertical_measured);
+}
+
+TEST_F(MeasuredSetDirectory, AMissingDirectoryIsAnError) {
+  fs::remove_all(dir_);
+  EXPECT_THAT(error_of(), AllOf(HasSubstr(dir_.string()), HasSubstr("not a directory"), HasSubstr("specimen.toml")));
+}
+
+TEST_F(MeasuredSetDirectory, AMissingSpecimenIsAnError) {
+  write("run_a.csv", test_csv());
+  write("run_b.csv", test_csv());
+  EXPECT_THAT(error_of(), HasSubstr("specimen.toml"));
+}
+
+TEST_F(MeasuredSetDirectory, OneTestIsTooFew) {
+  write("specimen.toml", kSpecimen);
+  write("run_a.csv", test_csv());
+  EXPECT_THAT(error_of(), AllOf(HasSubstr("found 1 test files"), HasSubstr("needs at least 2")));
+}
+
+TEST_F(MeasuredSetDirectory, AFaultInsideTheOnlyTestIsReportedBeforeTheCount) {
+  write("specimen.toml", kSpecimen);
+  write("run_a.csv", test_csv(false));
+  EXPECT_THAT(error_of(), AllOf(HasSubstr("run_a.csv"), HasSubstr("missing required column 'slide'")));
+}
+
+TEST_F(MeasuredSetDirectory, AnUnknownHeldOutTestIsAnError) {
+  write("specimen.toml", std::string(kSpecimen) + "[diagnosis]\nheldout = [\"run_z\"]\n");
+  write("run_a.csv", test_csv());
+  write("run_b.csv", test_csv());
+  EXPECT_THAT(error_of(), AllOf(HasSubstr("specimen.toml"), HasSubstr("diagnosis.heldout"), HasSubstr("\"run_z\"")));
+}
+
+TEST_F(MeasuredSetDirectory, EveryTestHeldOutLeavesNothingToFit) {
+  write("specimen.toml", std::string(kSpecimen) + "[diagnosis]\nheldout = [\"run_a\", \"run_b\"]\n");
+  write("run_a.csv", test_csv());
+  write("run_b.csv", test_csv());
+  EXPECT_THAT(error_of(), AllOf(HasSubstr("specimen.toml"), HasSubstr("training"), HasSubstr("got 0 and 2")));
+}
+
+}  // namespace
+}  // namespace caskdem::diagnosis
