@@ -11,12 +11,10 @@
 #include <algorithm>
 #include <cmath>
 
-#include <Random123/boxmuller.hpp>
-#include <Random123/philox.h>
-
 #include "diagnosis/measures.h"
 #include "diagnosis/mechanisms.h"
 #include "diagnosis/test_simulation.h"
+#include "ensemble/sampling.h"
 
 namespace caskdem::diagnosis {
 
@@ -32,12 +30,8 @@ double channel_noise(const std::vector<double>& x) {
 }
 
 double normal(std::uint64_t seed, std::uint64_t test, std::uint64_t realisation, std::uint64_t sample) {
-  using Philox = r123::Philox4x32;
-  const Philox::key_type key = {{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)}};
-  const Philox::ctr_type counter = {{static_cast<std::uint32_t>(sample), static_cast<std::uint32_t>(realisation),
-                                     static_cast<std::uint32_t>(test), 0x9ed1}};
-  const Philox::ctr_type out = Philox()(counter, key);
-  return r123::boxmuller((std::uint64_t(out[0]) << 32) | out[1], (std::uint64_t(out[2]) << 32) | out[3]).x;
+  return philox_normal(seed, {static_cast<std::uint32_t>(sample), static_cast<std::uint32_t>(realisation),
+                              static_cast<std::uint32_t>(test), 0x9ed1});
 }
 
 // Relative spread of the baseline parameters (friction, damping ratio, stiffness scale) over the

@@ -5,8 +5,6 @@
 #include <fstream>
 #include <numbers>
 
-#include <Random123/boxmuller.hpp>
-#include <Random123/philox.h>
 #include <nlohmann/json.hpp>
 
 #include "core/units.h"
@@ -24,34 +22,8 @@ namespace {
 constexpr double kSampleStep = 0.005;  // s: 200 Hz, a common data-logger rate
 constexpr double kFreeTime = 2.5;      // s of recording after the motion
 
-const char* kSpecimen = R"(title = "Synthetic shaking-table tests of the 1/3 model cask"
-# Made by `caskdem synthesize-measured`: what the experimenter knows, with nominal values.
-# The true values and any hidden mechanism are in truth.json, which the diagnosis never reads.
-
-[cask]
-shape = "cylinder"
-diameter = "0.95 m"
-height = "2.033 m"
-density = "8.743 g/cm^3"
-half_width = "gyration"
-rounding = "0.5 cm"
-
-[contact]
-normal_stiffness = "2.38e3 bar/cm"
-shear_stiffness = "2.21e3 bar/cm"
-
-[friction]
-law = "constant"
-coefficient = 0.35
-
-[damping]
-ratio = 0.03
-frequency = "135 Hz"
-
-[integration]
-safety_factor = 0.05   # 5 times the paper's step: the tests' rotations change by < 1 % (README, "Time step")
-
-[diagnosis]
+// How the diagnosis searches these data: fewer searches than its defaults, enough for them.
+const char* kSearch = R"([diagnosis]
 heldout = ["test2", "test5"]
 starts = 6
 evaluations = 50
@@ -65,13 +37,8 @@ double draw(std::uint64_t seed, std::uint64_t what, double low, double high) {
 
 // Standard normal number for (test, sample, channel) of the seed (Box-Muller on Philox output).
 double normal(std::uint64_t seed, std::uint64_t test, std::uint64_t sample, std::uint64_t channel) {
-  using Philox = r123::Philox4x32;
-  const Philox::key_type key = {{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)}};
-  const Philox::ctr_type counter = {{static_cast<std::uint32_t>(sample), static_cast<std::uint32_t>(test),
-                                     static_cast<std::uint32_t>(channel), 0x401e}};
-  const Philox::ctr_type out = Philox()(counter, key);
-  const r123::double2 pair = r123::boxmuller((std::uint64_t(out[0]) << 32) | out[1], (std::uint64_t(out[2]) << 32) | out[3]);
-  return pair.x;
+  return philox_normal(seed, {static_cast<std::uint32_t>(sample), static_cast<std::uint32_t>(test),
+                              static_cast<std::uint32_t>(channel), 0x401e});
 }
 
 struct TestDesign {
@@ -122,9 +89,40 @@ std::vector<TestDesign> designs(std::uint64_t seed, bool strong_vertical) {
 
 }  // namespace
 
+std::string synthetic_specimen_text() {
+  return R"(title = "Synthetic shaking-table tests of the 1/3 model cask"
+# Made by `caskdem synthesize-measured`: what the experimenter knows, with nominal values.
+# The true values and any hidden mechanism are in truth.json, which the diagnosis never reads.
+
+[cask]
+shape = "cylinder"
+diameter = "0.95 m"
+height = "2.033 m"
+density = "8.743 g/cm^3"
+half_width = "gyration"
+rounding = "0.5 cm"
+
+[contact]
+normal_stiffness = "2.38e3 bar/cm"
+shear_stiffness = "2.21e3 bar/cm"
+
+[friction]
+law = "constant"
+coefficient = 0.35
+
+[damping]
+ratio = 0.03
+frequency = "135 Hz"
+
+[integration]
+safety_factor = 0.05   # 5 times the paper's step: the tests' rotations change by < 1 % (README, "Time step")
+
+)";
+}
+
 SyntheticTruth write_synthetic_measured_set(const std::filesystem::path& directory, const SyntheticSpec& spec) {
   std::filesystem::create_directories(directory);
-  std::ofstream(directory / "specimen.toml") << kSpecimen;
+  std::ofstream(directory / "specimen.toml") << synthetic_specimen_text() << kSearch;
   const Case specimen = read_specimen(directory / "specimen.toml", nullptr);
   auto hidden = [&](Mechanism m) { return std::find(spec.hidden.begin(), spec.hidden.end(), m) != spec.hidden.end(); };
   const ModelVariant truth(specimen, spec.hidden, true);

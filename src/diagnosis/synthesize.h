@@ -38,6 +38,10 @@ struct SyntheticTruth {
   std::vector<std::pair<std::string, double>> parameters;  // every parameter of the true model
 };
 
+// The specimen.toml the generator writes, without its [diagnosis] table: the 1/3 model cask
+// with nominal friction, damping and contact stiffness.
+std::string synthetic_specimen_text();
+
 // Writes specimen.toml, test1.csv ... test8.csv and truth.json into `directory` (created).
 SyntheticTruth write_synthetic_measured_set(const std::filesystem::path& directory, const SyntheticSpec& spec);
 

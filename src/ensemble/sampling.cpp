@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <numeric>
 
+#include <Random123/boxmuller.hpp>
 #include <Random123/philox.h>
 #include <Random123/u01fixedpt.h>
 
@@ -22,6 +23,14 @@ double philox_uniform(std::uint64_t seed, std::uint64_t a, std::uint64_t b, std:
   const Philox::ctr_type out = Philox()(counter, key);
   const std::uint64_t bits = (std::uint64_t(out[0]) << 32) | out[1];
   return u01fixedpt_open_open_64_double(bits);
+}
+
+double philox_normal(std::uint64_t seed, const std::array<std::uint32_t, 4>& words) {
+  using Philox = r123::Philox4x32;
+  const Philox::key_type key = {{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32)}};
+  const Philox::ctr_type counter = {{words[0], words[1], words[2], words[3]}};
+  const Philox::ctr_type out = Philox()(counter, key);
+  return r123::boxmuller((std::uint64_t(out[0]) << 32) | out[1], (std::uint64_t(out[2]) << 32) | out[3]).x;
 }
 
 Sampler::Sampler(SamplingMethod method, std::uint64_t seed, int stripes, std::int64_t per_stripe, int dimensions)

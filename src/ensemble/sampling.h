@@ -10,6 +10,7 @@
 //                    u = (pi(position) + U(...)) / n, pi a random permutation drawn from
 //                    the same generator (McKay, Beckman & Conover 1979)
 
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -19,6 +20,10 @@ enum class SamplingMethod { monte_carlo, latin_hypercube };
 
 // A uniform number in the open interval (0, 1) from the counter (a, b, c) under the key seed.
 double philox_uniform(std::uint64_t seed, std::uint64_t a, std::uint64_t b, std::uint64_t c);
+
+// A standard normal number from the four counter words under the key seed (Box-Muller on the
+// generator's 128 output bits).
+double philox_normal(std::uint64_t seed, const std::array<std::uint32_t, 4>& counter);
 
 class Sampler {
  public:

@@ -3,8 +3,6 @@
 // one InputError that names the file (and key or column) at fault and what was expected.
 // A fault inside a test file is reported as that file's fault, before the count of files.
 
-#include <unistd.h>
-
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -16,6 +14,8 @@
 
 #include "core/error.h"
 #include "diagnosis/measured_set.h"
+#include "diagnosis/synthesize.h"
+#include "support/temporary_files.h"
 
 namespace caskdem::diagnosis {
 namespace {
@@ -25,24 +25,7 @@ using ::testing::AllOf;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 
-const char* kSpecimen = R"(title = "two tests"
-[cask]
-shape = "cylinder"
-diameter = "0.95 m"
-height = "2.033 m"
-density = "8.743 g/cm^3"
-half_width = "gyration"
-rounding = "0.5 cm"
-[contact]
-normal_stiffness = "2.38e3 bar/cm"
-shear_stiffness = "2.21e3 bar/cm"
-[friction]
-law = "constant"
-coefficient = 0.35
-[damping]
-ratio = 0.03
-frequency = "135 Hz"
-)";
+const std::string kSpecimen = synthetic_specimen_text();
 
 // A smooth 2 s test at 100 Hz with the four required channels (or without `slide`).
 std::string test_csv(bool with_slide = true) {
@@ -61,34 +44,15 @@ std::string test_csv(bool with_slide = true) {
   return text;
 }
 
-class MeasuredSetDirectory : public ::testing::Test {
+class MeasuredSetDirectory : public testing::TemporaryFiles {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() / ("caskdem_set_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  void write(const std::string& name, const std::string& text) const {
-    std::ofstream(dir_ / name, std::ios::binary) << text;
-  }
   std::string error_of() const {
-    try {
-      read_measured_set(dir_);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "no InputError for " << dir_;
-    return {};
+    return testing::input_error_of([&] { read_measured_set(dir_); }, dir_.string());
   }
-  fs::path dir_;
 };
 
 TEST_F(MeasuredSetDirectory, TestsSplitIntoTrainingAndTheNamedHeldOutTests) {
-  write("specimen.toml", std::string(kSpecimen) + "[diagnosis]\nheldout = [\"run_b\"]\n");
+  write("specimen.toml", kSpecimen + "[diagnosis]\nheldout = [\"run_b\"]\n");
   for (const char* name : {"run_a.csv", "run_b.csv", "run_c.csv"}) write(name, test_csv());
   const MeasuredSet set = read_measured_set(dir_);
   ASSERT_EQ(set.tests.size(), 3u);
@@ -122,14 +86,14 @@ TEST_F(MeasuredSetDirectory, AFaultInsideTheOnlyTestIsReportedBeforeTheCount) {
 }
 
 TEST_F(MeasuredSetDirectory, AnUnknownHeldOutTestIsAnError) {
-  write("specimen.toml", std::string(kSpecimen) + "[diagnosis]\nheldout = [\"run_z\"]\n");
+  write("specimen.toml", kSpecimen + "[diagnosis]\nheldout = [\"run_z\"]\n");
   write("run_a.csv", test_csv());
   write("run_b.csv", test_csv());
   EXPECT_THAT(error_of(), AllOf(HasSubstr("specimen.toml"), HasSubstr("diagnosis.heldout"), HasSubstr("\"run_z\"")));
 }
 
 TEST_F(MeasuredSetDirectory, EveryTestHeldOutLeavesNothingToFit) {
-  write("specimen.toml", std::string(kSpecimen) + "[diagnosis]\nheldout = [\"run_a\", \"run_b\"]\n");
+  write("specimen.toml", kSpecimen + "[diagnosis]\nheldout = [\"run_a\", \"run_b\"]\n");
   write("run_a.csv", test_csv());
   write("run_b.csv", test_csv());
   EXPECT_THAT(error_of(), AllOf(HasSubstr("specimen.toml"), HasSubstr("training"), HasSubstr("got 0 and 2")));

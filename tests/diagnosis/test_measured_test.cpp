@@ -4,8 +4,6 @@
 // masked as measured_test.h says, with one issue line; and each unusable file must be an
 // InputError naming the file, the line or channel, and what was expected.
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -22,6 +20,7 @@
 
 #include "core/error.h"
 #include "diagnosis/measured_test.h"
+#include "support/temporary_files.h"
 
 namespace caskdem::diagnosis {
 namespace {
@@ -118,35 +117,11 @@ std::string csv_text(const std::vector<Column>& columns, const std::vector<doubl
 constexpr double exact_step = 1.0 / 64.0;
 constexpr std::size_t rows = 40;
 
-class MeasuredTestFiles : public ::testing::Test {
+class MeasuredTestFiles : public testing::TemporaryFiles {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("caskdem_measured_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path file = dir_ / name;
-    std::ofstream(file, std::ios::binary) << text;
-    return file;
-  }
-  // The message of the InputError that reading throws; a failure when none is thrown.
   static std::string error_of(const fs::path& file) {
-    try {
-      read_measured_test(file);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "no InputError for " << file;
-    return {};
+    return testing::input_error_of([&] { read_measured_test(file); }, file.string());
   }
-
-  fs::path dir_;
 };
 
 // Every channel of the clean test, exactly, with nothing masked or reported.

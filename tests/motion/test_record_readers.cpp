@@ -2,8 +2,6 @@
 // the data's sources) and against malformed files, whose errors must name the file, the line
 // and what was expected.
 
-#include <unistd.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +13,7 @@
 #include "core/error.h"
 #include "core/units.h"
 #include "motion/record.h"
+#include "support/temporary_files.h"
 
 namespace caskdem::motion {
 namespace {
@@ -107,40 +106,16 @@ TEST(SharedRecords, AnAt2GivenAUnitOtherThanGIsAnError) {
 
 // ---- small files written by the tests -----------------------------------------------------
 
-class MotionFiles : public ::testing::Test {
+class MotionFiles : public testing::TemporaryFiles {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = fs::temp_directory_path() /
-           ("caskdem_motion_" + std::string(info->name()) + "_" + std::to_string(::getpid()));
-    fs::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  fs::path write(const std::string& name, const std::string& text) const {
-    const fs::path file = dir_ / name;
-    std::ofstream(file, std::ios::binary) << text;
-    return file;
-  }
-  // The message of the InputError that reading throws; a failure when none is thrown.
   static std::string error_of(const fs::path& file, const ReadOptions& options) {
-    try {
-      read_record(file, options);
-    } catch (const InputError& e) {
-      return e.what();
-    }
-    ADD_FAILURE() << "no InputError for " << file;
-    return {};
+    return testing::input_error_of([&] { read_record(file, options); }, file.string());
   }
   static ReadOptions in_g() {
     ReadOptions options;
     options.unit = AccelerationUnit::g;
     return options;
   }
-
-  fs::path dir_;
 };
 
 const std::string at2_header =
