@@ -109,6 +109,7 @@ TEST(Measures, NoiseLevelFromSecondDifferences) {
   std::vector<double> rotation = sine(kAmplitude);
   for (double& x : rotation) x += normal(generator);
   const TestReference r = reference_of(measured(rotation, settling_slide(0.0)), kStability);
+  RecordProperty("relative_error", std::to_string(r.rotation_noise / sigma - 1.0));
   EXPECT_NEAR(r.rotation_noise, sigma, 0.07 * sigma);
   // The rocking threshold is 1 % of alpha, which is above five noise levels here.
   EXPECT_DOUBLE_EQ(r.rocking_threshold, 0.01 * kStability);
@@ -143,6 +144,7 @@ TEST(Measures, LagOfAShiftedCopyToAFractionOfASample) {
   const TestReference reference = reference_of(m, kStability);
   const std::vector<double> r = residuals(m, reference, {sine(kAmplitude), settling_slide(0.0), false});
   const std::size_t lag = index_of("rotation_lag");
+  RecordProperty("lag_error_samples", std::to_string((r[lag] * reference.tolerance[lag] - delay) / kStep));
   EXPECT_NEAR(r[lag] * reference.tolerance[lag], delay, 0.1 * kStep);
 }
 
