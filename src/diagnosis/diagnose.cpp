@@ -220,8 +220,6 @@ double lag_of(const MeasuredTest& test, const SimulatedHistory& simulated) {
 std::vector<StructureRow> residual_structure(const MeasuredSet& set, const std::vector<TestReference>& references,
                                              const ModelFit& baseline, const Model& model,
                                              const std::vector<SimulatedHistory>& histories) {
-  const auto& names = measure_names();
-  auto index = [&](const char* name) { return std::find(names.begin(), names.end(), name) - names.begin(); };
   std::vector<double> amplitude, sliding_speed, impact_speed, vertical, asymmetry, lag;
   std::vector<double> r_rms, r_slide, r_rate, r_duration;
   for (std::size_t t = 0; t < set.tests.size(); ++t) {
@@ -236,11 +234,11 @@ std::vector<StructureRow> residual_structure(const MeasuredSet& set, const std::
     }
     vertical.push_back(v);
     const std::vector<double>& r = baseline.residuals[t];
-    asymmetry.push_back(r[index("rotation_asymmetry")]);
-    r_rms.push_back(r[index("rms_rotation")]);
-    r_slide.push_back(r[index("max_sliding")]);
-    r_rate.push_back(r[index("rocking_rate")]);
-    r_duration.push_back(r[index("rocking_duration")]);
+    asymmetry.push_back(r[measure_index("rotation_asymmetry")]);
+    r_rms.push_back(r[measure_index("rms_rotation")]);
+    r_slide.push_back(r[measure_index("max_sliding")]);
+    r_rate.push_back(r[measure_index("rocking_rate")]);
+    r_duration.push_back(r[measure_index("rocking_duration")]);
     lag.push_back(lag_of(test, histories[t]));
   }
   std::vector<StructureRow> rows = {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <stdexcept>
 
 namespace caskdem::diagnosis {
 
@@ -78,6 +79,13 @@ const std::vector<std::string>& measure_names() {
                                                  "max_sliding",      "residual_sliding",   "sliding_history",
                                                  "rotation_lag"};
   return names;
+}
+
+std::size_t measure_index(const std::string& name) {
+  const auto& names = measure_names();
+  const auto found = std::find(names.begin(), names.end(), name);
+  if (found == names.end()) throw std::invalid_argument("no error measure is named '" + name + "'");
+  return static_cast<std::size_t>(found - names.begin());
 }
 
 Features features_of(const std::vector<double>& time, const std::vector<double>& rotation,

@@ -38,6 +38,9 @@ namespace caskdem::diagnosis {
 
 const std::vector<std::string>& measure_names();
 
+// The position of a measure in measure_names(); throws std::invalid_argument for an unknown name.
+std::size_t measure_index(const std::string& name);
+
 struct Features {
   double peak_rotation = 0.0, rotation_asymmetry = 0.0, rms_rotation = 0.0, rocking_duration = 0.0,
          rocking_rate = 0.0, max_sliding = 0.0, residual_sliding = 0.0;

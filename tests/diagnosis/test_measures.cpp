@@ -55,11 +55,6 @@ MeasuredTest measured(std::vector<double> rotation, std::vector<double> slide) {
   return m;
 }
 
-std::size_t index_of(const std::string& name) {
-  const auto& names = measure_names();
-  return static_cast<std::size_t>(std::find(names.begin(), names.end(), name) - names.begin());
-}
-
 TEST(Measures, SineOverWholeCycles) {
   const double threshold = 0.5 * kAmplitude;
   const Features f = features_of(times(), sine(kAmplitude), settling_slide(0.01), nullptr, nullptr, threshold);
@@ -129,11 +124,11 @@ TEST(Measures, ResidualsAreDifferencesOverTolerances) {
   const std::vector<double> r = residuals(m, reference, {sine(1.1 * kAmplitude), settling_slide(0.02), false});
   // Peak: 0.1 A over a tolerance of 5 % of the measured peak (above three noise levels and
   // 1e-3 alpha here).
-  EXPECT_NEAR(r[index_of("peak_rotation")], 2.0, 1e-9);
+  EXPECT_NEAR(r[measure_index("peak_rotation")], 2.0, 1e-9);
   // Sliding on the scale T(x) = ln(1 + x / s0), s0 = 2e-4 m for a noise-free slide, tolerance 0.05.
   const double expected = (std::log1p(0.02 / 2e-4) - std::log1p(0.01 / 2e-4)) / 0.05;
-  EXPECT_NEAR(r[index_of("max_sliding")], expected, 1e-9);
-  EXPECT_NEAR(r[index_of("residual_sliding")], expected, 1e-9);
+  EXPECT_NEAR(r[measure_index("max_sliding")], expected, 1e-9);
+  EXPECT_NEAR(r[measure_index("residual_sliding")], expected, 1e-9);
 }
 
 TEST(Measures, LagOfAShiftedCopyToAFractionOfASample) {
@@ -143,7 +138,7 @@ TEST(Measures, LagOfAShiftedCopyToAFractionOfASample) {
   const MeasuredTest m = measured(sine(kAmplitude, delay), settling_slide(0.0));
   const TestReference reference = reference_of(m, kStability);
   const std::vector<double> r = residuals(m, reference, {sine(kAmplitude), settling_slide(0.0), false});
-  const std::size_t lag = index_of("rotation_lag");
+  const std::size_t lag = measure_index("rotation_lag");
   RecordProperty("lag_error_samples", std::to_string((r[lag] * reference.tolerance[lag] - delay) / kStep));
   EXPECT_NEAR(r[lag] * reference.tolerance[lag], delay, 0.1 * kStep);
 }
