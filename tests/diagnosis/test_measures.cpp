@@ -9,6 +9,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 
 #include <gtest/gtest.h>
 
@@ -116,6 +117,12 @@ TEST(Measures, ResidualsOfAnIdenticalSimulationVanish) {
   const std::vector<double> r = residuals(m, reference, {m.rotation, m.slide, false});
   ASSERT_EQ(r.size(), measure_names().size());
   for (std::size_t i = 0; i < r.size(); ++i) EXPECT_NEAR(r[i], 0.0, 1e-12) << measure_names()[i];
+}
+
+TEST(Measures, IndexByNameAndAnUnknownNameIsRefused) {
+  const auto& names = measure_names();
+  for (std::size_t i = 0; i < names.size(); ++i) EXPECT_EQ(measure_index(names[i]), i);
+  EXPECT_THROW(measure_index("peak_sliding"), std::invalid_argument);
 }
 
 TEST(Measures, ResidualsAreDifferencesOverTolerances) {
