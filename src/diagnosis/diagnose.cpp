@@ -220,6 +220,9 @@ double lag_of(const MeasuredTest& test, const SimulatedHistory& simulated) {
 std::vector<StructureRow> residual_structure(const MeasuredSet& set, const std::vector<TestReference>& references,
                                              const ModelFit& baseline, const Model& model,
                                              const std::vector<SimulatedHistory>& histories) {
+  const std::size_t asymmetry_index = measure_index("rotation_asymmetry"), rms_index = measure_index("rms_rotation"),
+                    slide_index = measure_index("max_sliding"), rate_index = measure_index("rocking_rate"),
+                    duration_index = measure_index("rocking_duration");
   std::vector<double> amplitude, sliding_speed, impact_speed, vertical, asymmetry, lag;
   std::vector<double> r_rms, r_slide, r_rate, r_duration;
   for (std::size_t t = 0; t < set.tests.size(); ++t) {
@@ -234,11 +237,11 @@ std::vector<StructureRow> residual_structure(const MeasuredSet& set, const std::
     }
     vertical.push_back(v);
     const std::vector<double>& r = baseline.residuals[t];
-    asymmetry.push_back(r[measure_index("rotation_asymmetry")]);
-    r_rms.push_back(r[measure_index("rms_rotation")]);
-    r_slide.push_back(r[measure_index("max_sliding")]);
-    r_rate.push_back(r[measure_index("rocking_rate")]);
-    r_duration.push_back(r[measure_index("rocking_duration")]);
+    asymmetry.push_back(r[asymmetry_index]);
+    r_rms.push_back(r[rms_index]);
+    r_slide.push_back(r[slide_index]);
+    r_rate.push_back(r[rate_index]);
+    r_duration.push_back(r[duration_index]);
     lag.push_back(lag_of(test, histories[t]));
   }
   std::vector<StructureRow> rows = {

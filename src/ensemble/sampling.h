@@ -23,7 +23,7 @@ double philox_uniform(std::uint64_t seed, std::uint64_t a, std::uint64_t b, std:
 
 // A standard normal number from the four counter words under the key seed (Box-Muller on the
 // generator's 128 output bits).
-double philox_normal(std::uint64_t seed, const std::array<std::uint32_t, 4>& counter);
+double philox_normal(std::uint64_t seed, const std::array<std::uint32_t, 4>& words);
 
 class Sampler {
  public:
