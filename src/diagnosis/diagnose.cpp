@@ -69,6 +69,25 @@ double error_of(const std::vector<std::vector<double>>& residuals, const std::ve
   return count > 0 ? std::sqrt(sum / double(count)) : 0.0;
 }
 
+// Every test's residuals at one point (the tests in parallel).
+std::vector<std::vector<double>> residuals_at(const MeasuredSet& set, const std::vector<TestReference>& references,
+                                              const ModelVariant& variant, const std::vector<double>& point,
+                                              const DiagnosisOptions& options) {
+  std::vector<int> all(set.tests.size());
+  std::iota(all.begin(), all.end(), 0);
+  std::vector<std::vector<double>> per_test;
+  (void)objective_over(set, references, variant, all, {point}, options, &per_test);
+  return per_test;
+}
+
+// Information criteria of a fit with loss J over n residuals and k parameters (diagnose.h).
+double bic_of(double j, double n, std::size_t k) {
+  return n * std::log(std::max(j, 1e-300) / n) + static_cast<double>(k) * std::log(n);
+}
+double aic_of(double j, double n, std::size_t k) {
+  return n * std::log(std::max(j, 1e-300) / n) + 2.0 * static_cast<double>(k);
+}
+
 // Fits a model; its searches start from `starts` (the model it extends, mechanism off) and from
 // the specimen's nominal values (mechanism off).
 ModelFit fit_variant(const MeasuredSet& set, const std::vector<TestReference>& references, const ModelVariant& variant,
@@ -89,20 +108,9 @@ ModelFit fit_variant(const MeasuredSet& set, const std::vector<TestReference>& r
   if (std::find(starts.begin(), starts.end(), nominal) == starts.end()) starts.push_back(nominal);
   m.fit = fit_parameters(m.parameters, starts, objective, fit_options, m.training_residual_count);
 
-  // Residuals of every test at the fitted point.
-  std::vector<int> all(set.tests.size());
-  std::iota(all.begin(), all.end(), 0);
-  m.residuals.assign(set.tests.size(), {});
-  for (int t : all) {
-    std::vector<std::vector<double>> per_test;
-    (void)objective_over(set, references, variant, {t}, {m.fit.best}, options, &per_test);
-    m.residuals[t] = per_test[0];
-  }
-  const double n = m.training_residual_count;
-  const double k = static_cast<double>(m.parameters.size());
-  const double j = std::max(m.fit.objective, 1e-300);
-  m.bic = n * std::log(j / n) + k * std::log(n);
-  m.aic = n * std::log(j / n) + 2.0 * k;
+  m.residuals = residuals_at(set, references, variant, m.fit.best, options);
+  m.bic = bic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
+  m.aic = aic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
   m.heldout_error = error_of(m.residuals, set.heldout);
   return m;
 }
@@ -148,10 +156,8 @@ ModelFit switched_off(const ModelFit& extended, const ModelVariant& variant) {
   m.fit.best = x;
   m.fit.standard_error.clear();
   m.fit.uncertainty_note = "the fit did not improve on the model it extends: the mechanism is switched off";
-  const double n = m.training_residual_count;
-  const double k = static_cast<double>(m.parameters.size());
-  m.bic = n * std::log(std::max(m.fit.objective, 1e-300) / n) + k * std::log(n);
-  m.aic = n * std::log(std::max(m.fit.objective, 1e-300) / n) + 2.0 * k;
+  m.bic = bic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
+  m.aic = aic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
   return m;
 }
 
@@ -290,6 +296,27 @@ ModelFit fit_baseline(const MeasuredSet& set, const std::vector<TestReference>& 
 
 ModelFit calibrate_baseline(const MeasuredSet& set, const DiagnosisOptions& options) {
   return fit_baseline(set, references_of(set), options);
+}
+
+PointEvaluation evaluate_point(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms,
+                               const std::vector<double>& point, const DiagnosisOptions& options) {
+  const ModelVariant variant(set.specimen, mechanisms, set.vertical_measured);
+  if (point.size() != variant.parameters().size()) {
+    throw std::invalid_argument("evaluate_point: " + std::to_string(point.size()) + " values for the " +
+                                std::to_string(variant.parameters().size()) + " parameters of " + variant.name());
+  }
+  PointEvaluation e;
+  e.model = variant.name();
+  e.parameters = variant.parameters();
+  e.point = point;
+  e.residuals = residuals_at(set, references_of(set), variant, point, options);
+  for (const std::vector<double>& r : e.residuals) e.loss.push_back(robust_loss(r));
+  // Summed in the order of the training tests, as the fits' objective is.
+  for (int t : set.training) e.training_objective += e.loss[t];
+  e.training_residual_count = static_cast<int>(set.training.size() * measure_names().size());
+  e.bic = bic_of(e.training_objective, e.training_residual_count, e.parameters.size());
+  e.heldout_error = error_of(e.residuals, set.heldout);
+  return e;
 }
 
 Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {

@@ -87,6 +87,26 @@ ModelFit calibrate_baseline(const MeasuredSet& set, const DiagnosisOptions& opti
 
 Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options);
 
+// The diagnosis's own judgement of one point of a model (`caskdem evaluate-measured`): with
+// the same tolerances as diagnose(), every test's residuals and loss, the training objective J
+// that the fits minimise, the held-out error and the BIC. A fit's numbers in diagnosis.json
+// are these at its fitted point; at any other point (a published or a true parameter set)
+// they say how that point would have fared.
+struct PointEvaluation {
+  std::string model;                           // "baseline" or "baseline + a + b"
+  std::vector<Parameter> parameters;
+  std::vector<double> point;                   // physical values, in the order of `parameters`
+  std::vector<std::vector<double>> residuals;  // per test (all tests), per measure
+  std::vector<double> loss;                    // per test
+  double training_objective = 0.0;             // J over the training tests
+  int training_residual_count = 0;
+  double heldout_error = 0.0;
+  double bic = 0.0;
+};
+
+PointEvaluation evaluate_point(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms,
+                               const std::vector<double>& point, const DiagnosisOptions& options);
+
 // The simulated histories of a fitted model on every test (for reports and plots).
 std::vector<SimulatedHistory> fitted_histories(const MeasuredSet& set, const ModelFit& fit, InstructionSet isa);
 
