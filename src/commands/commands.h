@@ -13,5 +13,6 @@ void add_similarity(CLI::App& app);
 void add_ensemble(CLI::App& app);
 void add_plot(CLI::App& app);
 void add_diagnose(CLI::App& app);
+void add_evaluate_measured(CLI::App& app);
 
 }  // namespace caskdem::commands

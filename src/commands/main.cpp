@@ -21,6 +21,7 @@ int main(int argc, char** argv) {
   caskdem::commands::add_ensemble(app);
   caskdem::commands::add_plot(app);
   caskdem::commands::add_diagnose(app);
+  caskdem::commands::add_evaluate_measured(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

@@ -1,0 +1,250 @@
+// caskdem evaluate-measured DIR: the diagnosis's own judgement of one parameter set.
+//
+// A fit says where its search ended; this says how any point fares by the same measure: a
+// published friction coefficient, a colleague's calibration, or the true values of a data set
+// made by synthesize-measured. Values come from --at NAME=VALUE (SI, in the units the
+// parameter list prints), else from a fit in a diagnosis.json or calibration.json (--from),
+// else from the specimen's nominal values with every mechanism switched off.
+
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "commands/commands.h"
+#include "core/error.h"
+#include "diagnosis/diagnose.h"
+
+namespace caskdem::commands {
+
+namespace {
+
+std::string trimmed(const std::string& text) {
+  const auto first = text.find_first_not_of(" \t");
+  if (first == std::string::npos) return "";
+  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
+}
+
+// "baseline", "floor_compliance", "eccentric_mass,sensor_delay" or a fit's own name
+// ("baseline + eccentric_mass + sensor_delay", as diagnosis.json writes it).
+std::vector<diagnosis::Mechanism> parse_model(const std::string& text) {
+  std::vector<diagnosis::Mechanism> mechanisms;
+  std::string normalised = text;
+  for (char& c : normalised) {
+    if (c == '+') c = ',';
+  }
+  std::stringstream list(normalised);
+  std::string name;
+  while (std::getline(list, name, ',')) {
+    name = trimmed(name);
+    if (name.empty() || name == "baseline") continue;
+    const auto m = diagnosis::parse_mechanism(name);
+    if (!m) {
+      std::string known;
+      for (diagnosis::Mechanism k : diagnosis::all_mechanisms()) known.append(" ").append(diagnosis::mechanism_name(k));
+      throw InputError("--model: unknown mechanism \"" + name + "\"; expected baseline or one or more of:" + known);
+    }
+    mechanisms.push_back(*m);
+  }
+  return mechanisms;
+}
+
+std::string parameter_list(const std::vector<diagnosis::Parameter>& parameters) {
+  std::string text;
+  for (const diagnosis::Parameter& p : parameters) text.append(text.empty() ? "" : ", ").append(p.name);
+  return text;
+}
+
+int index_of(const std::vector<diagnosis::Parameter>& parameters, const std::string& name) {
+  for (std::size_t i = 0; i < parameters.size(); ++i) {
+    if (parameters[i].name == name) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+// The shortest text that reads back as exactly `value`, so that a bound copied from a
+// message is accepted.
+std::string exact(double value) {
+  char buffer[32];
+  const auto end = std::to_chars(buffer, buffer + sizeof buffer, value).ptr;
+  return std::string(buffer, end);
+}
+
+// Values must lie in the box the diagnosis searches: outside it the model is not meant to hold
+// (a negative stiffness, a delay longer than the tests resolve).
+void check_in_box(const diagnosis::Parameter& p, double value, const std::string& where) {
+  if (!std::isfinite(value) || value < p.low || value > p.high) {
+    throw InputError(where + ": " + p.name + " = " + exact(value) + " is outside the range the diagnosis searches, " +
+                     exact(p.low) + " to " + exact(p.high) + (p.units.empty() ? "" : " " + p.units));
+  }
+}
+
+// The fit of `model` in a diagnosis.json or calibration.json: any object whose "model" is that
+// name and which has "parameters".
+const nlohmann::json* find_fit(const nlohmann::json& j, const std::string& model) {
+  if (j.is_object()) {
+    if (j.contains("model") && j["model"] == model && j.contains("parameters") && j["parameters"].is_object()) return &j;
+    for (const auto& item : j.items()) {
+      if (const nlohmann::json* found = find_fit(item.value(), model)) return found;
+    }
+  } else if (j.is_array()) {
+    for (const nlohmann::json& item : j) {
+      if (const nlohmann::json* found = find_fit(item, model)) return found;
+    }
+  }
+  return nullptr;
+}
+
+void take_from_file(const std::filesystem::path& file, const diagnosis::PointEvaluation& shape,
+                    std::vector<double>& point, std::vector<std::string>& source) {
+  std::ifstream in(file);
+  if (!in) throw InputError(located(file, 0, "no such file (expected a diagnosis.json or calibration.json)"));
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(located(file, 0, std::string("not JSON: ") + e.what()));
+  }
+  const nlohmann::json* fit = find_fit(j, shape.model);
+  if (!fit) throw InputError(located(file, 0, "no fit of the model \"" + shape.model + "\" in it (expected a \"model\" of that name with \"parameters\")"));
+  for (std::size_t i = 0; i < shape.parameters.size(); ++i) {
+    const diagnosis::Parameter& p = shape.parameters[i];
+    const nlohmann::json& parameters = (*fit)["parameters"];
+    if (!parameters.contains(p.name) || !parameters[p.name].contains("value") || !parameters[p.name]["value"].is_number()) {
+      throw InputError(located(file, 0, "the fit of \"" + shape.model + "\" has no number parameters." + p.name + ".value"));
+    }
+    point[i] = parameters[p.name]["value"].get<double>();
+    check_in_box(p, point[i], file.string());
+    source[i] = file.filename().string();
+  }
+}
+
+void take_assignment(const std::string& assignment, const diagnosis::PointEvaluation& shape, std::vector<double>& point,
+                     std::vector<std::string>& source) {
+  const auto equals = assignment.find('=');
+  if (equals == std::string::npos) {
+    throw InputError("--at " + assignment + ": expected NAME=VALUE, NAME one of: " + parameter_list(shape.parameters));
+  }
+  const std::string name = trimmed(assignment.substr(0, equals)), text = trimmed(assignment.substr(equals + 1));
+  const int i = index_of(shape.parameters, name);
+  if (i < 0) {
+    throw InputError("--at " + assignment + ": \"" + name + "\" is not a parameter of " + shape.model +
+                     "; expected one of: " + parameter_list(shape.parameters));
+  }
+  std::size_t used = 0;
+  double value = 0.0;
+  try {
+    value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (used == 0 || used != text.size()) throw InputError("--at " + assignment + ": expected a number (SI units)");
+  check_in_box(shape.parameters[i], value, "--at " + assignment);
+  point[i] = value;
+  source[i] = "--at";
+}
+
+nlohmann::json evaluation_json(const diagnosis::MeasuredSet& set, const diagnosis::PointEvaluation& e,
+                               const std::vector<std::string>& source) {
+  nlohmann::json j;
+  j["measured_data"] = set.directory.string();
+  j["model"] = e.model;
+  for (std::size_t i = 0; i < e.parameters.size(); ++i) {
+    j["parameters"][e.parameters[i].name] = {{"value", e.point[i]}, {"units", e.parameters[i].units}, {"from", source[i]}};
+  }
+  j["tests"] = nlohmann::json::array();
+  for (std::size_t t = 0; t < set.tests.size(); ++t) {
+    const bool heldout = std::find(set.heldout.begin(), set.heldout.end(), static_cast<int>(t)) != set.heldout.end();
+    nlohmann::json test;
+    test["name"] = set.tests[t].name;
+    test["role"] = heldout ? "heldout" : "training";
+    test["loss"] = e.loss[t];
+    for (std::size_t m = 0; m < diagnosis::measure_names().size(); ++m) {
+      test["residuals"][diagnosis::measure_names()[m]] = e.residuals[t][m];
+    }
+    j["tests"].push_back(test);
+  }
+  j["training_objective"] = e.training_objective;
+  j["training_residual_count"] = e.training_residual_count;
+  j["heldout_error"] = e.heldout_error;
+  j["bic"] = e.bic;
+  return j;
+}
+
+}  // namespace
+
+void add_evaluate_measured(CLI::App& app) {
+  struct Options {
+    std::string directory, model = "baseline", from, json;
+    std::vector<std::string> at;
+    int threads = 0;
+    bool residuals = false;
+  };
+  auto options = std::make_shared<Options>();
+  CLI::App* cmd = app.add_subcommand(
+      "evaluate-measured", "How one parameter set fares on measured tests, judged as the diagnosis judges its fits");
+  cmd->add_option("directory", options->directory, "Measured-data directory (specimen.toml and CSV files)")->required();
+  cmd->add_option("--model", options->model,
+                  "baseline (default), a mechanism, or several joined by ',' or '+' (e.g. floor_compliance)");
+  cmd->add_option("--at", options->at, "NAME=VALUE in SI units; repeat or separate with ','")->delimiter(',');
+  cmd->add_option("--from", options->from, "Take the model's fitted values from a diagnosis.json or calibration.json");
+  cmd->add_option("--json", options->json, "Also write the evaluation (per-test residuals) to this JSON file");
+  cmd->add_option("--threads", options->threads, "OpenMP threads")->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--residuals", options->residuals, "Print every test's scaled residual per measure");
+  cmd->callback([options]() {
+    const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
+    const std::vector<diagnosis::Mechanism> mechanisms = parse_model(options->model);
+    const diagnosis::ModelVariant variant(set.specimen, mechanisms, set.vertical_measured);
+    diagnosis::PointEvaluation shape;
+    shape.model = variant.name();
+    shape.parameters = variant.parameters();
+    std::vector<double> point = variant.reference();
+    std::vector<std::string> source(point.size(), "nominal");
+    for (std::size_t i = 0; i < point.size(); ++i) {
+      if (shape.parameters[i].mechanism) source[i] = "switched off";
+    }
+    if (!options->from.empty()) take_from_file(options->from, shape, point, source);
+    for (const std::string& assignment : options->at) take_assignment(assignment, shape, point, source);
+
+    diagnosis::DiagnosisOptions run_options;
+    run_options.threads = options->threads;
+    const diagnosis::PointEvaluation e = diagnosis::evaluate_point(set, mechanisms, point, run_options);
+
+    std::cout << "model           " << e.model << "\n";
+    for (std::size_t i = 0; i < e.parameters.size(); ++i) {
+      std::cout << "  " << std::left << std::setw(20) << e.parameters[i].name << std::setw(14) << std::setprecision(6)
+                << e.point[i] << std::setw(6) << e.parameters[i].units << "(" << source[i] << ")\n";
+    }
+    const std::vector<std::string>& measures = diagnosis::measure_names();
+    std::cout << std::left << std::setw(12) << "test" << std::setw(10) << "role" << "loss\n";
+    for (std::size_t t = 0; t < set.tests.size(); ++t) {
+      const bool heldout = std::find(set.heldout.begin(), set.heldout.end(), static_cast<int>(t)) != set.heldout.end();
+      std::cout << std::left << std::setw(12) << set.tests[t].name << std::setw(10) << (heldout ? "held-out" : "training")
+                << std::setprecision(4) << e.loss[t] << "\n";
+      if (options->residuals) {
+        for (std::size_t m = 0; m < measures.size(); ++m) {
+          std::cout << "    " << std::left << std::setw(20) << measures[m] << std::setprecision(3) << e.residuals[t][m] << "\n";
+        }
+      }
+    }
+    std::cout << "training J      " << std::setprecision(5) << e.training_objective << " (" << e.training_residual_count
+              << " scaled residuals; what the fits minimise)\n";
+    std::cout << "held-out error  " << e.heldout_error << " (RMS of scaled residuals)\n";
+    std::cout << "BIC             " << e.bic << "\n";
+    if (!options->json.empty()) {
+      std::ofstream out(options->json);
+      if (!out) throw InputError(located(options->json, 0, "cannot be written"));
+      out << evaluation_json(set, e, source).dump(2) << "\n";
+      std::cout << "wrote           " << options->json << "\n";
+    }
+  });
+}
+
+}  // namespace caskdem::commands

@@ -1,0 +1,139 @@
+// One parameter set judged as the diagnosis judges its fits (evaluate_point, and the command
+// `caskdem evaluate-measured`). A scaled residual is a measure's error over its tolerance
+// (the sensor noise and the test's own predictability), so at the values the data were made
+// with the held-out tests must agree within their tolerances (RMS below 1), and a floor too
+// slippery for the cask to rock (friction 0.08, far below the rocking threshold b/h = 0.47
+// of the 1/3 model cask) must not. At a fit's own point the evaluation gives the fit's
+// numbers, so a user can set any point beside the fit. Bad values on the command line get one
+// message naming the option and what was expected.
+
+#include <sys/wait.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+#include <gmock/gmock.h>
+#include <gtest/gtest.h>
+
+#include "diagnosis/diagnose.h"
+#include "diagnosis/synthesize.h"
+
+namespace caskdem::diagnosis {
+namespace {
+
+using ::testing::ContainsRegex;
+using ::testing::HasSubstr;
+
+std::filesystem::path synthetic_set(std::uint64_t seed, SyntheticTruth* truth = nullptr) {
+  const auto directory = std::filesystem::temp_directory_path() / ("caskdem-evaluate-" + std::to_string(seed));
+  std::filesystem::remove_all(directory);
+  SyntheticSpec spec;
+  spec.seed = seed;
+  const SyntheticTruth made = write_synthetic_measured_set(directory, spec);
+  if (truth) *truth = made;
+  return directory;
+}
+
+double value_of(const SyntheticTruth& truth, const std::string& name) {
+  for (const auto& [n, v] : truth.parameters) {
+    if (n == name) return v;
+  }
+  throw std::logic_error("no true value of " + name);
+}
+
+TEST(EvaluatePoint, TheTrueValuesAgreeWithinTolerancesAndASlipperyFloorDoesNot) {
+  SyntheticTruth truth;
+  const MeasuredSet set = read_measured_set(synthetic_set(1, &truth));
+  DiagnosisOptions options;
+  options.threads = 2;
+  const std::vector<double> true_point = {value_of(truth, "friction"), value_of(truth, "damping_ratio"),
+                                          value_of(truth, "stiffness_scale")};
+  const PointEvaluation at_truth = evaluate_point(set, {}, true_point, options);
+  EXPECT_EQ(at_truth.model, "baseline");
+  ASSERT_EQ(at_truth.loss.size(), set.tests.size());
+  EXPECT_LT(at_truth.heldout_error, 1.0);
+
+  std::vector<double> slippery = true_point;
+  slippery[0] = 0.08;
+  const PointEvaluation sliding = evaluate_point(set, {}, slippery, options);
+  EXPECT_GT(sliding.heldout_error, 1.0);
+  EXPECT_GT(sliding.training_objective, at_truth.training_objective);
+}
+
+TEST(EvaluatePoint, AtAFitsOwnPointItGivesTheFitsNumbers) {
+  const MeasuredSet set = read_measured_set(synthetic_set(2));
+  DiagnosisOptions options;
+  options.threads = 2;
+  const ModelFit fit = calibrate_baseline(set, options);
+  const PointEvaluation e = evaluate_point(set, {}, fit.fit.best, options);
+  // The same simulations and the same order of summation: equal, not merely close.
+  EXPECT_EQ(e.training_objective, fit.fit.objective);
+  EXPECT_EQ(e.heldout_error, fit.heldout_error);
+  EXPECT_EQ(e.bic, fit.bic);
+  EXPECT_EQ(e.residuals, fit.residuals);
+}
+
+struct Outcome {
+  int status = 0;
+  std::string output;
+};
+
+Outcome caskdem(const std::string& arguments) {
+  const std::string command = std::string(CASKDEM_BINARY) + " " + arguments + " 2>&1";
+  Outcome o;
+  std::FILE* pipe = popen(command.c_str(), "r");
+  char buffer[4096];
+  while (std::fgets(buffer, sizeof buffer, pipe)) o.output += buffer;
+  const int raw = pclose(pipe);
+  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return o;
+}
+
+void expect_one_message(const Outcome& o, const std::string& text) {
+  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_THAT(o.output, HasSubstr(text));
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << o.output;
+}
+
+TEST(EvaluateMeasuredCommand, PrintsEveryTestAndTheObjective) {
+  const std::string directory = synthetic_set(3).string();
+  const Outcome o = caskdem("evaluate-measured " + directory + " --model floor_compliance --at friction=0.3");
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_THAT(o.output, HasSubstr("baseline + floor_compliance"));
+  EXPECT_THAT(o.output, HasSubstr("(--at)"));
+  EXPECT_THAT(o.output, ContainsRegex("floor_soft_ratio +1 +\\(switched off\\)"));
+  EXPECT_THAT(o.output, HasSubstr("test8"));
+  EXPECT_THAT(o.output, HasSubstr("training J"));
+}
+
+TEST(EvaluateMeasuredCommand, BadValuesAreNamed) {
+  const std::string directory = synthetic_set(3).string();
+  expect_one_message(caskdem("evaluate-measured " + directory + " --at frction=0.3"),
+                     "\"frction\" is not a parameter of baseline; expected one of: friction, damping_ratio, stiffness_scale");
+  expect_one_message(caskdem("evaluate-measured " + directory + " --at friction=lots"), "--at friction=lots: expected a number");
+  expect_one_message(caskdem("evaluate-measured " + directory + " --at friction"), "expected NAME=VALUE");
+  expect_one_message(caskdem("evaluate-measured " + directory + " --at stiffness_scale=20"),
+                     "stiffness_scale = 20 is outside the range the diagnosis searches, 0.1 to 10");
+  expect_one_message(caskdem("evaluate-measured " + directory + " --model wobble"), "--model: unknown mechanism \"wobble\"");
+  expect_one_message(caskdem("evaluate-measured " + directory + " --from /nonexistent/diagnosis.json"),
+                     "/nonexistent/diagnosis.json: no such file");
+}
+
+TEST(EvaluateMeasuredCommand, TakesAFitFromAFileAndNamesAFileWithoutIt) {
+  const auto directory = synthetic_set(3);
+  const auto file = directory / "calibration.json";
+  std::ofstream(file) << R"({"model": "baseline", "parameters": {"friction": {"value": 0.31},
+      "damping_ratio": {"value": 0.04}, "stiffness_scale": {"value": 1.2}}})";
+  const Outcome o = caskdem("evaluate-measured " + directory.string() + " --from " + file.string() + " --at friction=0.3");
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_THAT(o.output, ContainsRegex("stiffness_scale +1\\.2 +\\(calibration\\.json\\)"));
+  EXPECT_THAT(o.output, ContainsRegex("friction +0\\.3 +\\(--at\\)"));  // --at wins over --from
+  expect_one_message(caskdem("evaluate-measured " + directory.string() + " --model sensor_delay --from " + file.string()),
+                     file.string() + ": no fit of the model \"baseline + sensor_delay\"");
+}
+
+}  // namespace
+}  // namespace caskdem::diagnosis
