@@ -13,7 +13,7 @@
 // kinetic ratio and decay speed settle in a basin other than the truth's, whose training
 // objective is lower (28.6 against 35.5); with floor_compliance hidden (seed 106) the
 // baseline mimics the soft layer with a soft, heavily damped contact (stiffness scale 0.27,
-// damping ratio 0.24) and no search reaches the true basin (training objective 17 against
+// damping ratio 0.25) and no search reaches the true basin (training objective 17 against
 // the fit's 63). Both are search problems in an objective whose basins are a few percent
 // wide in every parameter, not missing physics: at the truth of seed 101, static friction
 // 0.2 % higher (kinetic friction unchanged) raises test4's loss from 1.3 to 114, the net drift
