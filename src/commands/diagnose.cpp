@@ -4,10 +4,8 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
-#include <sstream>
 
 #include "commands/commands.h"
-#include "core/error.h"
 #include "diagnosis/report.h"
 #include "diagnosis/synthesize.h"
 
@@ -110,18 +108,7 @@ void add_diagnose(CLI::App& app) {
     cmd->callback([options]() {
       diagnosis::SyntheticSpec spec;
       spec.seed = options->seed;
-      std::stringstream list(options->effects);
-      std::string name;
-      while (std::getline(list, name, ',')) {
-        if (name.empty()) continue;
-        const auto m = diagnosis::parse_mechanism(name);
-        if (!m) {
-          std::string known;
-          for (diagnosis::Mechanism k : diagnosis::all_mechanisms()) known.append(" ").append(diagnosis::mechanism_name(k));
-          throw InputError("--effect: unknown mechanism \"" + name + "\"; expected one of:" + known);
-        }
-        spec.hidden.push_back(*m);
-      }
+      spec.hidden = diagnosis::parse_mechanism_list(options->effects, "--effect");
       const diagnosis::SyntheticTruth truth = diagnosis::write_synthetic_measured_set(options->out, spec);
       std::cout << "wrote           " << options->out << "/ (specimen.toml, test1.csv ... test8.csv, truth.json)\n";
       std::cout << "hidden          " << (truth.hidden.empty() ? std::string("none") : truth.hidden.front());

@@ -14,59 +14,24 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <sstream>
+#include <optional>
+#include <string_view>
 
 #include <nlohmann/json.hpp>
 
 #include "commands/commands.h"
 #include "core/error.h"
+#include "core/text.h"
 #include "diagnosis/diagnose.h"
 
 namespace caskdem::commands {
 
 namespace {
 
-std::string trimmed(const std::string& text) {
-  const auto first = text.find_first_not_of(" \t");
-  if (first == std::string::npos) return "";
-  return text.substr(first, text.find_last_not_of(" \t") - first + 1);
-}
-
-// "baseline", "floor_compliance", "eccentric_mass,sensor_delay" or a fit's own name
-// ("baseline + eccentric_mass + sensor_delay", as diagnosis.json writes it).
-std::vector<diagnosis::Mechanism> parse_model(const std::string& text) {
-  std::vector<diagnosis::Mechanism> mechanisms;
-  std::string normalised = text;
-  for (char& c : normalised) {
-    if (c == '+') c = ',';
-  }
-  std::stringstream list(normalised);
-  std::string name;
-  while (std::getline(list, name, ',')) {
-    name = trimmed(name);
-    if (name.empty() || name == "baseline") continue;
-    const auto m = diagnosis::parse_mechanism(name);
-    if (!m) {
-      std::string known;
-      for (diagnosis::Mechanism k : diagnosis::all_mechanisms()) known.append(" ").append(diagnosis::mechanism_name(k));
-      throw InputError("--model: unknown mechanism \"" + name + "\"; expected baseline or one or more of:" + known);
-    }
-    mechanisms.push_back(*m);
-  }
-  return mechanisms;
-}
-
 std::string parameter_list(const std::vector<diagnosis::Parameter>& parameters) {
   std::string text;
   for (const diagnosis::Parameter& p : parameters) text.append(text.empty() ? "" : ", ").append(p.name);
   return text;
-}
-
-int index_of(const std::vector<diagnosis::Parameter>& parameters, const std::string& name) {
-  for (std::size_t i = 0; i < parameters.size(); ++i) {
-    if (parameters[i].name == name) return static_cast<int>(i);
-  }
-  return -1;
 }
 
 // The shortest text that reads back as exactly `value`, so that a bound copied from a
@@ -102,7 +67,7 @@ const nlohmann::json* find_fit(const nlohmann::json& j, const std::string& model
   return nullptr;
 }
 
-void take_from_file(const std::filesystem::path& file, const diagnosis::PointEvaluation& shape,
+void take_from_file(const std::filesystem::path& file, const diagnosis::ModelVariant& variant,
                     std::vector<double>& point, std::vector<std::string>& source) {
   std::ifstream in(file);
   if (!in) throw InputError(located(file, 0, "no such file (expected a diagnosis.json or calibration.json)"));
@@ -112,13 +77,16 @@ void take_from_file(const std::filesystem::path& file, const diagnosis::PointEva
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(located(file, 0, std::string("not JSON: ") + e.what()));
   }
-  const nlohmann::json* fit = find_fit(j, shape.model);
-  if (!fit) throw InputError(located(file, 0, "no fit of the model \"" + shape.model + "\" in it (expected a \"model\" of that name with \"parameters\")"));
-  for (std::size_t i = 0; i < shape.parameters.size(); ++i) {
-    const diagnosis::Parameter& p = shape.parameters[i];
+  const nlohmann::json* fit = find_fit(j, variant.name());
+  if (!fit) {
+    throw InputError(located(file, 0, "no fit of the model \"" + variant.name() +
+                                          "\" in it (expected a \"model\" of that name with \"parameters\")"));
+  }
+  for (std::size_t i = 0; i < variant.parameters().size(); ++i) {
+    const diagnosis::Parameter& p = variant.parameters()[i];
     const nlohmann::json& parameters = (*fit)["parameters"];
     if (!parameters.contains(p.name) || !parameters[p.name].contains("value") || !parameters[p.name]["value"].is_number()) {
-      throw InputError(located(file, 0, "the fit of \"" + shape.model + "\" has no number parameters." + p.name + ".value"));
+      throw InputError(located(file, 0, "the fit of \"" + variant.name() + "\" has no number parameters." + p.name + ".value"));
     }
     point[i] = parameters[p.name]["value"].get<double>();
     check_in_box(p, point[i], file.string());
@@ -126,28 +94,23 @@ void take_from_file(const std::filesystem::path& file, const diagnosis::PointEva
   }
 }
 
-void take_assignment(const std::string& assignment, const diagnosis::PointEvaluation& shape, std::vector<double>& point,
+void take_assignment(const std::string& assignment, const diagnosis::ModelVariant& variant, std::vector<double>& point,
                      std::vector<std::string>& source) {
+  const std::vector<diagnosis::Parameter>& parameters = variant.parameters();
   const auto equals = assignment.find('=');
   if (equals == std::string::npos) {
-    throw InputError("--at " + assignment + ": expected NAME=VALUE, NAME one of: " + parameter_list(shape.parameters));
+    throw InputError("--at " + assignment + ": expected NAME=VALUE, NAME one of: " + parameter_list(parameters));
   }
-  const std::string name = trimmed(assignment.substr(0, equals)), text = trimmed(assignment.substr(equals + 1));
-  const int i = index_of(shape.parameters, name);
+  const std::string name(trim(std::string_view(assignment).substr(0, equals)));
+  const int i = variant.index_of(name);
   if (i < 0) {
-    throw InputError("--at " + assignment + ": \"" + name + "\" is not a parameter of " + shape.model +
-                     "; expected one of: " + parameter_list(shape.parameters));
+    throw InputError("--at " + assignment + ": \"" + name + "\" is not a parameter of " + variant.name() +
+                     "; expected one of: " + parameter_list(parameters));
   }
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != text.size()) throw InputError("--at " + assignment + ": expected a number (SI units)");
-  check_in_box(shape.parameters[i], value, "--at " + assignment);
-  point[i] = value;
+  const std::optional<double> value = parse_double(trim(std::string_view(assignment).substr(equals + 1)));
+  if (!value) throw InputError("--at " + assignment + ": expected a number (SI units)");
+  check_in_box(parameters[i], *value, "--at " + assignment);
+  point[i] = *value;
   source[i] = "--at";
 }
 
@@ -200,18 +163,15 @@ void add_evaluate_measured(CLI::App& app) {
   cmd->add_flag("--residuals", options->residuals, "Print every test's scaled residual per measure");
   cmd->callback([options]() {
     const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
-    const std::vector<diagnosis::Mechanism> mechanisms = parse_model(options->model);
+    const std::vector<diagnosis::Mechanism> mechanisms = diagnosis::parse_mechanism_list(options->model, "--model");
     const diagnosis::ModelVariant variant(set.specimen, mechanisms, set.vertical_measured);
-    diagnosis::PointEvaluation shape;
-    shape.model = variant.name();
-    shape.parameters = variant.parameters();
     std::vector<double> point = variant.reference();
     std::vector<std::string> source(point.size(), "nominal");
     for (std::size_t i = 0; i < point.size(); ++i) {
-      if (shape.parameters[i].mechanism) source[i] = "switched off";
+      if (variant.parameters()[i].mechanism) source[i] = "switched off";
     }
-    if (!options->from.empty()) take_from_file(options->from, shape, point, source);
-    for (const std::string& assignment : options->at) take_assignment(assignment, shape, point, source);
+    if (!options->from.empty()) take_from_file(options->from, variant, point, source);
+    for (const std::string& assignment : options->at) take_assignment(assignment, variant, point, source);
 
     diagnosis::DiagnosisOptions run_options;
     run_options.threads = options->threads;

@@ -80,6 +80,11 @@ std::vector<std::vector<double>> residuals_at(const MeasuredSet& set, const std:
   return per_test;
 }
 
+// The scaled residuals a training objective sums: every measure of every training test.
+int training_residual_count(const MeasuredSet& set) {
+  return static_cast<int>(set.training.size() * measure_names().size());
+}
+
 // Information criteria of a fit with loss J over n residuals and k parameters (diagnose.h).
 double bic_of(double j, double n, std::size_t k) {
   return n * std::log(std::max(j, 1e-300) / n) + static_cast<double>(k) * std::log(n);
@@ -96,7 +101,7 @@ ModelFit fit_variant(const MeasuredSet& set, const std::vector<TestReference>& r
   m.mechanisms = variant.mechanisms();
   m.name = variant.name();
   m.parameters = variant.parameters();
-  m.training_residual_count = static_cast<int>(set.training.size() * measure_names().size());
+  m.training_residual_count = training_residual_count(set);
   const PopulationObjective objective = [&](const std::vector<std::vector<double>>& points) {
     return objective_over(set, references, variant, set.training, points, options);
   };
@@ -313,7 +318,7 @@ PointEvaluation evaluate_point(const MeasuredSet& set, const std::vector<Mechani
   for (const std::vector<double>& r : e.residuals) e.loss.push_back(robust_loss(r));
   // Summed in the order of the training tests, as the fits' objective is.
   for (int t : set.training) e.training_objective += e.loss[t];
-  e.training_residual_count = static_cast<int>(set.training.size() * measure_names().size());
+  e.training_residual_count = training_residual_count(set);
   e.bic = bic_of(e.training_objective, e.training_residual_count, e.parameters.size());
   e.heldout_error = error_of(e.residuals, set.heldout);
   return e;

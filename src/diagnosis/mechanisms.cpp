@@ -2,7 +2,11 @@
 
 #include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <stdexcept>
+
+#include "core/error.h"
+#include "core/text.h"
 
 namespace caskdem::diagnosis {
 
@@ -33,6 +37,26 @@ std::optional<Mechanism> parse_mechanism(const std::string& name) {
     if (mechanism_name(m) == name) return m;
   }
   return std::nullopt;
+}
+
+std::vector<Mechanism> parse_mechanism_list(const std::string& text, const std::string& where) {
+  std::string normalised = text;
+  std::replace(normalised.begin(), normalised.end(), '+', ',');
+  std::stringstream list(normalised);
+  std::vector<Mechanism> mechanisms;
+  std::string name;
+  while (std::getline(list, name, ',')) {
+    name = std::string(trim(name));
+    if (name.empty() || name == "baseline") continue;
+    const auto m = parse_mechanism(name);
+    if (!m) {
+      std::string known;
+      for (Mechanism k : all_mechanisms()) known.append(" ").append(mechanism_name(k));
+      throw InputError(where + ": unknown mechanism \"" + name + "\"; expected baseline or one or more of:" + known);
+    }
+    mechanisms.push_back(*m);
+  }
+  return mechanisms;
 }
 
 ModelVariant::ModelVariant(const Case& specimen, std::vector<Mechanism> mechanisms, bool vertical_measured)

@@ -41,6 +41,10 @@ enum class Mechanism {
 const std::vector<Mechanism>& all_mechanisms();
 std::string mechanism_name(Mechanism mechanism);
 std::optional<Mechanism> parse_mechanism(const std::string& name);
+// The mechanisms of a list separated by ',' or '+', as a fit's name writes it ("baseline +
+// eccentric_mass"); "baseline" and blanks name none. An unknown name is an InputError that
+// begins with `where` (the option or key it came from).
+std::vector<Mechanism> parse_mechanism_list(const std::string& text, const std::string& where);
 
 struct Parameter {
   std::string name;
@@ -75,9 +79,9 @@ class ModelVariant {
   std::vector<double> reference(const std::vector<double>* baseline = nullptr) const;
   // The specimen's nominal baseline parameters.
   std::vector<double> nominal_baseline() const;
+  int index_of(const std::string& name) const;  // of a parameter; -1 when absent
 
  private:
-  int index_of(const std::string& name) const;  // -1 when absent
   Case specimen_;
   std::vector<Mechanism> mechanisms_;
   bool vertical_measured_;

@@ -9,6 +9,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "support/command_line.h"
 #include "support/paper_cases.h"
 
 namespace caskdem {
@@ -16,21 +17,8 @@ namespace {
 
 using ::testing::HasSubstr;
 
-struct Outcome {
-  int status = 0;
-  std::string output;
-};
-
-Outcome caskdem(const std::string& arguments) {
-  const std::string command = std::string(CASKDEM_BINARY) + " " + arguments + " 2>&1";
-  Outcome o;
-  std::FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe)) o.output += buffer;
-  const int raw = pclose(pipe);
-  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return o;
-}
+using testing::Outcome;
+using testing::run_caskdem;
 
 std::filesystem::path write(const std::string& name, const std::string& text) {
   const auto file = std::filesystem::temp_directory_path() / name;
@@ -39,14 +27,14 @@ std::filesystem::path write(const std::string& name, const std::string& text) {
 }
 
 TEST(CommandLine, MissingCaseFile) {
-  const Outcome o = caskdem("run /nonexistent/case.toml");
+  const Outcome o = run_caskdem("run /nonexistent/case.toml");
   EXPECT_NE(o.status, 0);
   EXPECT_THAT(o.output, HasSubstr("/nonexistent/case.toml: no such file"));
 }
 
 TEST(CommandLine, MalformedRecordLineNamesFileAndLine) {
   const auto record = write("caskdem-bad-record.csv", "t,a\n0.00,0.01\n0.01,0.02\n0.02,abc\n0.03,0.01\n");
-  const Outcome o = caskdem("motion " + record.string() + " --unit g");
+  const Outcome o = run_caskdem("motion " + record.string() + " --unit g");
   EXPECT_EQ(o.status, 2);
   EXPECT_THAT(o.output, HasSubstr(record.string() + ":4"));
   EXPECT_THAT(o.output, HasSubstr("expected"));
@@ -58,7 +46,7 @@ TEST(CommandLine, BadCaseValueExitsNonZeroWithOneMessage) {
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   text.replace(text.find("kinetic = 0.45"), 14, "kinetic = \"lots\"");
   const auto file = write("caskdem-bad-case.toml", text);
-  const Outcome o = caskdem("run " + file.string() + " --out " + (std::filesystem::temp_directory_path() / "x").string());
+  const Outcome o = run_caskdem("run " + file.string() + " --out " + (std::filesystem::temp_directory_path() / "x").string());
   EXPECT_EQ(o.status, 2);
   EXPECT_THAT(o.output, HasSubstr("key friction.kinetic: expected a number"));
   EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << o.output;
@@ -67,7 +55,7 @@ TEST(CommandLine, BadCaseValueExitsNonZeroWithOneMessage) {
 TEST(CommandLine, RunWritesSummaryHistoryHdf5AndPlot) {
   const auto out = std::filesystem::temp_directory_path() / "caskdem-run-pulse";
   std::filesystem::remove_all(out);
-  const Outcome o = caskdem("run " + testing::case_path("default-pulse.toml") + " --out " + out.string());
+  const Outcome o = run_caskdem("run " + testing::case_path("default-pulse.toml") + " --out " + out.string());
   ASSERT_EQ(o.status, 0) << o.output;
   EXPECT_THAT(o.output, HasSubstr("max |theta|"));
   for (const char* name : {"summary.json", "history.csv", "run.h5", "history.png"}) {
@@ -75,7 +63,7 @@ TEST(CommandLine, RunWritesSummaryHistoryHdf5AndPlot) {
     EXPECT_GT(std::filesystem::file_size(out / name), 100u) << name;
   }
   // The README promises h5py-readable output: read it back with Debian's python.
-  const Outcome read = caskdem("--version");
+  const Outcome read = run_caskdem("--version");
   EXPECT_EQ(read.status, 0);
   const std::string check = "/usr/bin/python3 -c \"import h5py; f = h5py.File('" + (out / "run.h5").string() +
                             "'); print(len(f['history/time']), f['summary'].attrs['status'])\"";
@@ -89,7 +77,7 @@ TEST(CommandLine, RunWritesSummaryHistoryHdf5AndPlot) {
 
 TEST(CommandLine, NoNanInResultFiles) {
   const auto out = std::filesystem::temp_directory_path() / "caskdem-run-pulse-nan";
-  ASSERT_EQ(caskdem("run " + testing::case_path("default-pulse.toml") + " --no-plot --out " + out.string()).status, 0);
+  ASSERT_EQ(run_caskdem("run " + testing::case_path("default-pulse.toml") + " --no-plot --out " + out.string()).status, 0);
   for (const char* name : {"summary.json", "history.csv"}) {
     std::ifstream in(out / name);
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -7,10 +7,7 @@
 // numbers, so a user can set any point beside the fit. Bad values on the command line get one
 // message naming the option and what was expected.
 
-#include <sys/wait.h>
-
 #include <algorithm>
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -20,6 +17,7 @@
 
 #include "diagnosis/diagnose.h"
 #include "diagnosis/synthesize.h"
+#include "support/command_line.h"
 
 namespace caskdem::diagnosis {
 namespace {
@@ -76,21 +74,8 @@ TEST(EvaluatePoint, AtAFitsOwnPointItGivesTheFitsNumbers) {
   EXPECT_EQ(e.residuals, fit.residuals);
 }
 
-struct Outcome {
-  int status = 0;
-  std::string output;
-};
-
-Outcome caskdem(const std::string& arguments) {
-  const std::string command = std::string(CASKDEM_BINARY) + " " + arguments + " 2>&1";
-  Outcome o;
-  std::FILE* pipe = popen(command.c_str(), "r");
-  char buffer[4096];
-  while (std::fgets(buffer, sizeof buffer, pipe)) o.output += buffer;
-  const int raw = pclose(pipe);
-  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  return o;
-}
+using testing::Outcome;
+using testing::run_caskdem;
 
 void expect_one_message(const Outcome& o, const std::string& text) {
   EXPECT_EQ(o.status, 2) << o.output;
@@ -100,7 +85,7 @@ void expect_one_message(const Outcome& o, const std::string& text) {
 
 TEST(EvaluateMeasuredCommand, PrintsEveryTestAndTheObjective) {
   const std::string directory = synthetic_set(3).string();
-  const Outcome o = caskdem("evaluate-measured " + directory + " --model floor_compliance --at friction=0.3");
+  const Outcome o = run_caskdem("evaluate-measured " + directory + " --model floor_compliance --at friction=0.3");
   ASSERT_EQ(o.status, 0) << o.output;
   EXPECT_THAT(o.output, HasSubstr("baseline + floor_compliance"));
   EXPECT_THAT(o.output, HasSubstr("(--at)"));
@@ -111,14 +96,14 @@ TEST(EvaluateMeasuredCommand, PrintsEveryTestAndTheObjective) {
 
 TEST(EvaluateMeasuredCommand, BadValuesAreNamed) {
   const std::string directory = synthetic_set(3).string();
-  expect_one_message(caskdem("evaluate-measured " + directory + " --at frction=0.3"),
+  expect_one_message(run_caskdem("evaluate-measured " + directory + " --at frction=0.3"),
                      "\"frction\" is not a parameter of baseline; expected one of: friction, damping_ratio, stiffness_scale");
-  expect_one_message(caskdem("evaluate-measured " + directory + " --at friction=lots"), "--at friction=lots: expected a number");
-  expect_one_message(caskdem("evaluate-measured " + directory + " --at friction"), "expected NAME=VALUE");
-  expect_one_message(caskdem("evaluate-measured " + directory + " --at stiffness_scale=20"),
+  expect_one_message(run_caskdem("evaluate-measured " + directory + " --at friction=lots"), "--at friction=lots: expected a number");
+  expect_one_message(run_caskdem("evaluate-measured " + directory + " --at friction"), "expected NAME=VALUE");
+  expect_one_message(run_caskdem("evaluate-measured " + directory + " --at stiffness_scale=20"),
                      "stiffness_scale = 20 is outside the range the diagnosis searches, 0.1 to 10");
-  expect_one_message(caskdem("evaluate-measured " + directory + " --model wobble"), "--model: unknown mechanism \"wobble\"");
-  expect_one_message(caskdem("evaluate-measured " + directory + " --from /nonexistent/diagnosis.json"),
+  expect_one_message(run_caskdem("evaluate-measured " + directory + " --model wobble"), "--model: unknown mechanism \"wobble\"");
+  expect_one_message(run_caskdem("evaluate-measured " + directory + " --from /nonexistent/diagnosis.json"),
                      "/nonexistent/diagnosis.json: no such file");
 }
 
@@ -127,11 +112,11 @@ TEST(EvaluateMeasuredCommand, TakesAFitFromAFileAndNamesAFileWithoutIt) {
   const auto file = directory / "calibration.json";
   std::ofstream(file) << R"({"model": "baseline", "parameters": {"friction": {"value": 0.31},
       "damping_ratio": {"value": 0.04}, "stiffness_scale": {"value": 1.2}}})";
-  const Outcome o = caskdem("evaluate-measured " + directory.string() + " --from " + file.string() + " --at friction=0.3");
+  const Outcome o = run_caskdem("evaluate-measured " + directory.string() + " --from " + file.string() + " --at friction=0.3");
   ASSERT_EQ(o.status, 0) << o.output;
   EXPECT_THAT(o.output, ContainsRegex("stiffness_scale +1\\.2 +\\(calibration\\.json\\)"));
   EXPECT_THAT(o.output, ContainsRegex("friction +0\\.3 +\\(--at\\)"));  // --at wins over --from
-  expect_one_message(caskdem("evaluate-measured " + directory.string() + " --model sensor_delay --from " + file.string()),
+  expect_one_message(run_caskdem("evaluate-measured " + directory.string() + " --model sensor_delay --from " + file.string()),
                      file.string() + ": no fit of the model \"baseline + sensor_delay\"");
 }
 

@@ -20,6 +20,7 @@
 #include <gtest/gtest.h>
 
 #include "io/hdf5_file.h"
+#include "support/command_line.h"
 
 extern char** environ;
 
@@ -32,15 +33,7 @@ const std::string kEnsemble = std::string(CASKDEM_SOURCE_DIR) + "/tests/ensemble
 const std::string kMpirun = std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 ") + CASKDEM_MPIEXEC +
                             " --oversubscribe --bind-to none";
 
-int shell(const std::string& command, std::string* output = nullptr) {
-  std::FILE* pipe = popen((command + " 2>&1").c_str(), "r");
-  char buffer[1024];
-  std::string text;
-  while (std::fgets(buffer, sizeof buffer, pipe)) text += buffer;
-  const int status = pclose(pipe);
-  if (output) *output = text;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+using testing::run_shell;
 
 std::filesystem::path directory() {
   const auto d = std::filesystem::temp_directory_path() / "caskdem-mpi";
@@ -88,27 +81,26 @@ void expect_same_results(const std::filesystem::path& a_file, const std::filesys
 
 TEST(Mpi, TwoAndThreeRanksGiveTheSingleProcessFile) {
   const auto single = directory() / "single.h5";
-  ASSERT_EQ(shell(std::string(CASKDEM_BINARY) + " ensemble " + kEnsemble + " --out " + single.string() +
-                  " --threads 2 --quiet --no-plot"),
+  ASSERT_EQ(run_shell(std::string(CASKDEM_BINARY) + " ensemble " + kEnsemble + " --out " + single.string() +
+                      " --threads 2 --quiet --no-plot")
+                .status,
             0);
   for (int ranks : {2, 3}) {
     const auto distributed = directory() / ("ranks" + std::to_string(ranks) + ".h5");
-    std::string output;
-    ASSERT_EQ(shell(kMpirun + " -n " + std::to_string(ranks) + " " + CASKDEM_BINARY + " ensemble " + kEnsemble +
-                        " --out " + distributed.string() + " --threads 1 --quiet --no-plot",
-                    &output),
-              0)
-        << output;
-    EXPECT_NE(output.find(std::to_string(ranks) + " ranks"), std::string::npos) << output;
+    const testing::Outcome run = run_shell(kMpirun + " -n " + std::to_string(ranks) + " " + CASKDEM_BINARY +
+                                           " ensemble " + kEnsemble + " --out " + distributed.string() +
+                                           " --threads 1 --quiet --no-plot");
+    ASSERT_EQ(run.status, 0) << run.output;
+    EXPECT_NE(run.output.find(std::to_string(ranks) + " ranks"), std::string::npos) << run.output;
     expect_same_results(single, distributed);
   }
 }
 
 TEST(Mpi, KilledRankLeavesAResumableFile) {
   const auto single = directory() / "single-for-resume.h5";
-  ASSERT_EQ(shell(std::string(CASKDEM_BINARY) + " ensemble " + std::string(CASKDEM_SOURCE_DIR) +
-                  "/tests/ensemble/data/resume.toml --out " + single.string() +
-                  " --threads 2 --quiet --no-plot"),
+  ASSERT_EQ(run_shell(std::string(CASKDEM_BINARY) + " ensemble " + std::string(CASKDEM_SOURCE_DIR) +
+                      "/tests/ensemble/data/resume.toml --out " + single.string() + " --threads 2 --quiet --no-plot")
+                .status,
             0);
   const auto file = directory() / "killed.h5";
   std::filesystem::remove(file);
@@ -147,12 +139,9 @@ TEST(Mpi, KilledRankLeavesAResumableFile) {
   const std::int64_t total = hdf5::open_file(file).integer_attribute("realisations");
   RecordProperty("completed_when_killed", std::to_string(left) + " of " + std::to_string(total));
   EXPECT_LT(left, total);
-  std::string output;
-  ASSERT_EQ(shell(kMpirun + " -n 2 " + CASKDEM_BINARY + " ensemble " + ensemble + " --out " + file.string() +
-                      " --resume --threads 1 --quiet --no-plot",
-                  &output),
-            0)
-      << output;
+  const testing::Outcome resumed = run_shell(kMpirun + " -n 2 " + CASKDEM_BINARY + " ensemble " + ensemble +
+                                             " --out " + file.string() + " --resume --threads 1 --quiet --no-plot");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
   expect_same_results(single, file);
 }
 

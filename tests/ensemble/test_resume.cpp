@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "io/hdf5_file.h"
+#include "support/command_line.h"
 
 extern char** environ;
 
@@ -26,15 +27,7 @@ namespace {
 
 const std::string kEnsemble = std::string(CASKDEM_SOURCE_DIR) + "/tests/ensemble/data/resume.toml";
 
-int run_caskdem(const std::string& arguments, std::string* output = nullptr) {
-  std::FILE* pipe = popen((std::string(CASKDEM_BINARY) + " " + arguments + " 2>&1").c_str(), "r");
-  char buffer[1024];
-  std::string text;
-  while (std::fgets(buffer, sizeof buffer, pipe)) text += buffer;
-  const int status = pclose(pipe);
-  if (output) *output = text;
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
+using testing::run_caskdem;
 
 std::int64_t completed_in(const std::filesystem::path& file) {
   try {
@@ -50,7 +43,7 @@ TEST(Resume, KilledRunResumesToTheUninterruptedResult) {
   std::filesystem::create_directories(directory);
   const auto whole = directory / "whole.h5";
   const auto interrupted = directory / "interrupted.h5";
-  ASSERT_EQ(run_caskdem("ensemble " + kEnsemble + " --out " + whole.string() + " --threads 2 --quiet --no-plot"), 0);
+  ASSERT_EQ(run_caskdem("ensemble " + kEnsemble + " --out " + whole.string() + " --threads 2 --quiet --no-plot").status, 0);
 
   // Start the same run and kill it once some, but not all, realisations are done.
   std::vector<std::string> args = {CASKDEM_BINARY, "ensemble", kEnsemble, "--out", interrupted.string(),
@@ -80,11 +73,10 @@ TEST(Resume, KilledRunResumesToTheUninterruptedResult) {
   ASSERT_LT(left, total);
   EXPECT_FALSE(hdf5::open_file(interrupted).has("limit_states"));
 
-  std::string output;
-  ASSERT_EQ(run_caskdem("ensemble " + kEnsemble + " --out " + interrupted.string() + " --resume --threads 2 --no-plot",
-                        &output), 0)
-      << output;
-  EXPECT_THAT(output, ::testing::HasSubstr(std::to_string(total - left) + " realisations in this run"));
+  const testing::Outcome resumed =
+      run_caskdem("ensemble " + kEnsemble + " --out " + interrupted.string() + " --resume --threads 2 --no-plot");
+  ASSERT_EQ(resumed.status, 0) << resumed.output;
+  EXPECT_THAT(resumed.output, ::testing::HasSubstr(std::to_string(total - left) + " realisations in this run"));
 
   const hdf5::Group a = hdf5::open_file(whole);
   const hdf5::Group b = hdf5::open_file(interrupted);
@@ -121,10 +113,11 @@ TEST(Resume, RefusesAFileOfAnotherEnsemble) {
   text.replace(text.find("realisations = 600"), 18, "realisations = 4");
   const auto small = directory / "small.toml";
   std::ofstream(small) << text;
-  ASSERT_EQ(run_caskdem("ensemble " + small.string() + " --out " + result.string() + " --quiet --no-plot"), 0);
-  std::string output;
-  EXPECT_EQ(run_caskdem("ensemble " + kEnsemble + " --out " + result.string() + " --resume --quiet --no-plot", &output), 2);
-  EXPECT_THAT(output, ::testing::HasSubstr("different ensemble"));
+  ASSERT_EQ(run_caskdem("ensemble " + small.string() + " --out " + result.string() + " --quiet --no-plot").status, 0);
+  const testing::Outcome refused =
+      run_caskdem("ensemble " + kEnsemble + " --out " + result.string() + " --resume --quiet --no-plot");
+  EXPECT_EQ(refused.status, 2);
+  EXPECT_THAT(refused.output, ::testing::HasSubstr("different ensemble"));
 }
 
 }  // namespace
