@@ -11,6 +11,7 @@
 
 #include "support/command_line.h"
 #include "support/paper_cases.h"
+#include "support/temporary_files.h"
 
 namespace caskdem {
 namespace {
@@ -19,21 +20,16 @@ using ::testing::HasSubstr;
 
 using testing::Outcome;
 using testing::run_caskdem;
+using CommandLine = testing::TemporaryFiles;
 
-std::filesystem::path write(const std::string& name, const std::string& text) {
-  const auto file = std::filesystem::temp_directory_path() / name;
-  std::ofstream(file) << text;
-  return file;
-}
-
-TEST(CommandLine, MissingCaseFile) {
+TEST_F(CommandLine, MissingCaseFile) {
   const Outcome o = run_caskdem("run /nonexistent/case.toml");
   EXPECT_NE(o.status, 0);
   EXPECT_THAT(o.output, HasSubstr("/nonexistent/case.toml: no such file"));
 }
 
-TEST(CommandLine, MalformedRecordLineNamesFileAndLine) {
-  const auto record = write("caskdem-bad-record.csv", "t,a\n0.00,0.01\n0.01,0.02\n0.02,abc\n0.03,0.01\n");
+TEST_F(CommandLine, MalformedRecordLineNamesFileAndLine) {
+  const auto record = write("bad-record.csv", "t,a\n0.00,0.01\n0.01,0.02\n0.02,abc\n0.03,0.01\n");
   const Outcome o = run_caskdem("motion " + record.string() + " --unit g");
   EXPECT_EQ(o.status, 2);
   EXPECT_THAT(o.output, HasSubstr(record.string() + ":4"));
@@ -41,20 +37,19 @@ TEST(CommandLine, MalformedRecordLineNamesFileAndLine) {
   EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << "one message: " << o.output;
 }
 
-TEST(CommandLine, BadCaseValueExitsNonZeroWithOneMessage) {
+TEST_F(CommandLine, BadCaseValueExitsNonZeroWithOneMessage) {
   std::ifstream in(testing::case_path("model-1-3-sine.toml"));
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   text.replace(text.find("kinetic = 0.45"), 14, "kinetic = \"lots\"");
-  const auto file = write("caskdem-bad-case.toml", text);
-  const Outcome o = run_caskdem("run " + file.string() + " --out " + (std::filesystem::temp_directory_path() / "x").string());
+  const auto file = write("bad-case.toml", text);
+  const Outcome o = run_caskdem("run " + file.string() + " --out " + (dir_ / "out").string());
   EXPECT_EQ(o.status, 2);
   EXPECT_THAT(o.output, HasSubstr("key friction.kinetic: expected a number"));
   EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << o.output;
 }
 
-TEST(CommandLine, RunWritesSummaryHistoryHdf5AndPlot) {
-  const auto out = std::filesystem::temp_directory_path() / "caskdem-run-pulse";
-  std::filesystem::remove_all(out);
+TEST_F(CommandLine, RunWritesSummaryHistoryHdf5AndPlot) {
+  const auto out = dir_ / "out";
   const Outcome o = run_caskdem("run " + testing::case_path("default-pulse.toml") + " --out " + out.string());
   ASSERT_EQ(o.status, 0) << o.output;
   EXPECT_THAT(o.output, HasSubstr("max |theta|"));
@@ -75,8 +70,8 @@ TEST(CommandLine, RunWritesSummaryHistoryHdf5AndPlot) {
   EXPECT_THAT(std::string(buffer), HasSubstr("completed"));
 }
 
-TEST(CommandLine, NoNanInResultFiles) {
-  const auto out = std::filesystem::temp_directory_path() / "caskdem-run-pulse-nan";
+TEST_F(CommandLine, NoNanInResultFiles) {
+  const auto out = dir_ / "out";
   ASSERT_EQ(run_caskdem("run " + testing::case_path("default-pulse.toml") + " --no-plot --out " + out.string()).status, 0);
   for (const char* name : {"summary.json", "history.csv"}) {
     std::ifstream in(out / name);

@@ -18,6 +18,7 @@
 #include "diagnosis/diagnose.h"
 #include "diagnosis/synthesize.h"
 #include "support/command_line.h"
+#include "support/temporary_files.h"
 
 namespace caskdem::diagnosis {
 namespace {
@@ -25,14 +26,16 @@ namespace {
 using ::testing::ContainsRegex;
 using ::testing::HasSubstr;
 
-std::filesystem::path synthetic_set(std::uint64_t seed, SyntheticTruth* truth = nullptr) {
-  const auto directory = std::filesystem::temp_directory_path() / ("caskdem-evaluate-" + std::to_string(seed));
-  std::filesystem::remove_all(directory);
+using testing::TestDirectory;
+
+// A synthetic measured set written into the test's own directory.
+const std::filesystem::path& synthetic_set(const TestDirectory& directory, std::uint64_t seed,
+                                           SyntheticTruth* truth = nullptr) {
   SyntheticSpec spec;
   spec.seed = seed;
-  const SyntheticTruth made = write_synthetic_measured_set(directory, spec);
+  const SyntheticTruth made = write_synthetic_measured_set(directory.path(), spec);
   if (truth) *truth = made;
-  return directory;
+  return directory.path();
 }
 
 double value_of(const SyntheticTruth& truth, const std::string& name) {
@@ -43,8 +46,9 @@ double value_of(const SyntheticTruth& truth, const std::string& name) {
 }
 
 TEST(EvaluatePoint, TheTrueValuesAgreeWithinTolerancesAndASlipperyFloorDoesNot) {
+  const TestDirectory directory;
   SyntheticTruth truth;
-  const MeasuredSet set = read_measured_set(synthetic_set(1, &truth));
+  const MeasuredSet set = read_measured_set(synthetic_set(directory, 1, &truth));
   DiagnosisOptions options;
   options.threads = 2;
   const std::vector<double> true_point = {value_of(truth, "friction"), value_of(truth, "damping_ratio"),
@@ -62,7 +66,8 @@ TEST(EvaluatePoint, TheTrueValuesAgreeWithinTolerancesAndASlipperyFloorDoesNot) 
 }
 
 TEST(EvaluatePoint, AtAFitsOwnPointItGivesTheFitsNumbers) {
-  const MeasuredSet set = read_measured_set(synthetic_set(2));
+  const TestDirectory directory;
+  const MeasuredSet set = read_measured_set(synthetic_set(directory, 2));
   DiagnosisOptions options;
   options.threads = 2;
   const ModelFit fit = calibrate_baseline(set, options);
@@ -84,7 +89,8 @@ void expect_one_message(const Outcome& o, const std::string& text) {
 }
 
 TEST(EvaluateMeasuredCommand, PrintsEveryTestAndTheObjective) {
-  const std::string directory = synthetic_set(3).string();
+  const TestDirectory scratch;
+  const std::string directory = synthetic_set(scratch, 3).string();
   const Outcome o = run_caskdem("evaluate-measured " + directory + " --model floor_compliance --at friction=0.3");
   ASSERT_EQ(o.status, 0) << o.output;
   EXPECT_THAT(o.output, HasSubstr("baseline + floor_compliance"));
@@ -95,7 +101,8 @@ TEST(EvaluateMeasuredCommand, PrintsEveryTestAndTheObjective) {
 }
 
 TEST(EvaluateMeasuredCommand, BadValuesAreNamed) {
-  const std::string directory = synthetic_set(3).string();
+  const TestDirectory scratch;
+  const std::string directory = synthetic_set(scratch, 3).string();
   expect_one_message(run_caskdem("evaluate-measured " + directory + " --at frction=0.3"),
                      "\"frction\" is not a parameter of baseline; expected one of: friction, damping_ratio, stiffness_scale");
   expect_one_message(run_caskdem("evaluate-measured " + directory + " --at friction=lots"), "--at friction=lots: expected a number");
@@ -108,7 +115,8 @@ TEST(EvaluateMeasuredCommand, BadValuesAreNamed) {
 }
 
 TEST(EvaluateMeasuredCommand, TakesAFitFromAFileAndNamesAFileWithoutIt) {
-  const auto directory = synthetic_set(3);
+  const TestDirectory scratch;
+  const auto directory = synthetic_set(scratch, 3);
   const auto file = directory / "calibration.json";
   std::ofstream(file) << R"({"model": "baseline", "parameters": {"friction": {"value": 0.31},
       "damping_ratio": {"value": 0.04}, "stiffness_scale": {"value": 1.2}}})";

@@ -41,21 +41,18 @@
 
 #include "diagnosis/diagnose.h"
 #include "diagnosis/synthesize.h"
+#include "support/temporary_files.h"
 
 namespace caskdem::diagnosis {
 namespace {
 
 Diagnosis diagnose_synthetic(const std::vector<Mechanism>& hidden, std::uint64_t seed, bool second_effect) {
-  std::string name = "none";
-  if (!hidden.empty()) name = mechanism_name(hidden.front());
-  const auto directory =
-      std::filesystem::temp_directory_path() / ("caskdem-hidden-" + name + "-" + std::to_string(seed));
-  std::filesystem::remove_all(directory);
+  const testing::TestDirectory directory;
   SyntheticSpec spec;
   spec.hidden = hidden;
   spec.seed = seed;
-  write_synthetic_measured_set(directory, spec);
-  const MeasuredSet set = read_measured_set(directory);
+  write_synthetic_measured_set(directory.path(), spec);
+  const MeasuredSet set = read_measured_set(directory.path());
   DiagnosisOptions options;
   options.threads = 2;
   options.look_for_second_effect = second_effect;

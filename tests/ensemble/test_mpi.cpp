@@ -21,6 +21,7 @@
 
 #include "io/hdf5_file.h"
 #include "support/command_line.h"
+#include "support/temporary_files.h"
 
 extern char** environ;
 
@@ -35,11 +36,6 @@ const std::string kMpirun = std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN
 
 using testing::run_shell;
 
-std::filesystem::path directory() {
-  const auto d = std::filesystem::temp_directory_path() / "caskdem-mpi";
-  std::filesystem::create_directories(d);
-  return d;
-}
 
 // A rank of the job writing `output`: a process whose program is caskdem (not mpirun, not a
 // shell) and whose arguments name the output file.
@@ -80,13 +76,14 @@ void expect_same_results(const std::filesystem::path& a_file, const std::filesys
 }
 
 TEST(Mpi, TwoAndThreeRanksGiveTheSingleProcessFile) {
-  const auto single = directory() / "single.h5";
+  const testing::TestDirectory directory;
+  const auto single = directory / "single.h5";
   ASSERT_EQ(run_shell(std::string(CASKDEM_BINARY) + " ensemble " + kEnsemble + " --out " + single.string() +
                       " --threads 2 --quiet --no-plot")
                 .status,
             0);
   for (int ranks : {2, 3}) {
-    const auto distributed = directory() / ("ranks" + std::to_string(ranks) + ".h5");
+    const auto distributed = directory / ("ranks" + std::to_string(ranks) + ".h5");
     const testing::Outcome run = run_shell(kMpirun + " -n " + std::to_string(ranks) + " " + CASKDEM_BINARY +
                                            " ensemble " + kEnsemble + " --out " + distributed.string() +
                                            " --threads 1 --quiet --no-plot");
@@ -97,13 +94,13 @@ TEST(Mpi, TwoAndThreeRanksGiveTheSingleProcessFile) {
 }
 
 TEST(Mpi, KilledRankLeavesAResumableFile) {
-  const auto single = directory() / "single-for-resume.h5";
+  const testing::TestDirectory directory;
+  const auto single = directory / "single-for-resume.h5";
   ASSERT_EQ(run_shell(std::string(CASKDEM_BINARY) + " ensemble " + std::string(CASKDEM_SOURCE_DIR) +
                       "/tests/ensemble/data/resume.toml --out " + single.string() + " --threads 2 --quiet --no-plot")
                 .status,
             0);
-  const auto file = directory() / "killed.h5";
-  std::filesystem::remove(file);
+  const auto file = directory / "killed.h5";
   // A longer ensemble than the comparison's, so that there is time to kill a rank. Start a
   // 2-rank job and kill one of its ranks (a caskdem process newer than mpirun) once the file
   // shows completed work.

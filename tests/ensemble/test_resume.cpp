@@ -19,6 +19,7 @@
 
 #include "io/hdf5_file.h"
 #include "support/command_line.h"
+#include "support/temporary_files.h"
 
 extern char** environ;
 
@@ -38,9 +39,7 @@ std::int64_t completed_in(const std::filesystem::path& file) {
 }
 
 TEST(Resume, KilledRunResumesToTheUninterruptedResult) {
-  const auto directory = std::filesystem::temp_directory_path() / "caskdem-resume";
-  std::filesystem::remove_all(directory);
-  std::filesystem::create_directories(directory);
+  const testing::TestDirectory directory;
   const auto whole = directory / "whole.h5";
   const auto interrupted = directory / "interrupted.h5";
   ASSERT_EQ(run_caskdem("ensemble " + kEnsemble + " --out " + whole.string() + " --threads 2 --quiet --no-plot").status, 0);
@@ -104,9 +103,7 @@ TEST(Resume, KilledRunResumesToTheUninterruptedResult) {
 }
 
 TEST(Resume, RefusesAFileOfAnotherEnsemble) {
-  const auto directory = std::filesystem::temp_directory_path() / "caskdem-resume-other";
-  std::filesystem::remove_all(directory);
-  std::filesystem::create_directories(directory);
+  const testing::TestDirectory directory;
   const auto result = directory / "result.h5";
   std::ifstream in(kEnsemble);
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -1,9 +1,10 @@
 #pragma once
-// For tests that write small input files: a fresh directory per test (removed afterwards)
-// and the message of the InputError that reading them throws.
+// For tests that write files: a fresh directory per test (removed afterwards), and the
+// message of the InputError that reading a bad file throws.
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -14,24 +15,47 @@
 
 namespace caskdem::testing {
 
+// A fresh, empty directory that belongs to the running test alone, removed when this object
+// goes. ctest runs every test in its own process and several at once, so a directory name two
+// tests share lets one delete the other's files half-way; the test's full name and the
+// process id make the name unique.
+class TestDirectory {
+ public:
+  explicit TestDirectory(const std::string& label = "") {
+    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+    std::string name = "caskdem_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
+                       std::to_string(::getpid());
+    if (!label.empty()) name += "_" + label;
+    std::replace(name.begin(), name.end(), '/', '_');  // parameterised tests' names hold '/'
+    path_ = std::filesystem::temp_directory_path() / name;
+    std::filesystem::remove_all(path_);
+    std::filesystem::create_directories(path_);
+  }
+  ~TestDirectory() {
+    std::error_code ec;
+    std::filesystem::remove_all(path_, ec);
+  }
+  TestDirectory(const TestDirectory&) = delete;
+  TestDirectory& operator=(const TestDirectory&) = delete;
+
+  const std::filesystem::path& path() const { return path_; }
+  std::filesystem::path operator/(const std::string& name) const { return path_ / name; }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// A fixture for tests that write small input files into their own directory.
 class TemporaryFiles : public ::testing::Test {
  protected:
-  void SetUp() override {
-    const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
-    dir_ = std::filesystem::temp_directory_path() / ("caskdem_" + std::string(info->test_suite_name()) + "_" +
-                                                     info->name() + "_" + std::to_string(::getpid()));
-    std::filesystem::create_directories(dir_);
-  }
-  void TearDown() override {
-    std::error_code ec;
-    std::filesystem::remove_all(dir_, ec);
-  }
+  void SetUp() override { dir_ = directory_.path(); }
   std::filesystem::path write(const std::string& name, const std::string& text) const {
     const std::filesystem::path file = dir_ / name;
     std::ofstream(file, std::ios::binary) << text;
     return file;
   }
 
+  TestDirectory directory_;
   std::filesystem::path dir_;
 };
 
