@@ -35,6 +35,7 @@
 // `caskdem synthesize-measured --effect NAME --seed N` writes, at the values in its truth.json.
 
 #include <filesystem>
+#include <ostream>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -70,6 +71,9 @@ struct HiddenCase {
   Mechanism mechanism;
   std::uint64_t seed;
 };
+
+// How ctest and gtest name a case (else they print its bytes).
+void PrintTo(const HiddenCase& c, std::ostream* os) { *os << mechanism_name(c.mechanism) << ", seed " << c.seed; }
 
 class HiddenEffect : public ::testing::TestWithParam<HiddenCase> {};
 
