@@ -16,8 +16,8 @@
 namespace caskdem::bench {
 namespace {
 
-constexpr int kSteps = 20000;
-constexpr int kLanes = 64;
+constexpr int kSteps = kKernelSteps;
+constexpr int kLanes = kKernelLanes;
 
 // Operations of one realisation-step, averaged over a rocking history.
 lane::OperationCount count_operations(FrictionLaw law) {
