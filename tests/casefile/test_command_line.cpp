@@ -38,10 +38,8 @@ TEST_F(CommandLine, MalformedRecordLineNamesFileAndLine) {
 }
 
 TEST_F(CommandLine, BadCaseValueExitsNonZeroWithOneMessage) {
-  std::ifstream in(testing::case_path("model-1-3-sine.toml"));
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  text.replace(text.find("kinetic = 0.45"), 14, "kinetic = \"lots\"");
-  const auto file = write("bad-case.toml", text);
+  const auto file = variant_of(testing::case_path("model-1-3-sine.toml"), "bad-case.toml", "kinetic = 0.45",
+                               "kinetic = \"lots\"");
   const Outcome o = run_caskdem("run " + file.string() + " --out " + (dir_ / "out").string());
   EXPECT_EQ(o.status, 2);
   EXPECT_THAT(o.output, HasSubstr("key friction.kinetic: expected a number"));

@@ -18,20 +18,14 @@ namespace {
 
 using ::testing::HasSubstr;
 
-using EnsembleErrors = testing::TemporaryFiles;
-
-// The mixed-outcomes ensemble with one line replaced, in `directory`.
-std::filesystem::path variant(const std::filesystem::path& directory, const std::string& name,
-                              const std::string& find, const std::string& replace) {
-  std::ifstream in(std::string(CASKDEM_SOURCE_DIR) + "/tests/ensemble/data/mixed-outcomes.toml");
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  const auto at = text.find(find);
-  EXPECT_NE(at, std::string::npos) << find;
-  text.replace(at, find.size(), replace);
-  const auto file = directory / (name + ".toml");
-  std::ofstream(file) << text;
-  return file;
-}
+// Variants of the mixed-outcomes ensemble, one line replaced.
+class EnsembleErrors : public testing::TemporaryFiles {
+ protected:
+  std::filesystem::path variant(const std::string& name, const std::string& find, const std::string& replace) const {
+    return variant_of(std::string(CASKDEM_SOURCE_DIR) + "/tests/ensemble/data/mixed-outcomes.toml", name + ".toml",
+                      find, replace);
+  }
+};
 
 std::string error_of(const std::filesystem::path& file) {
   try {
@@ -44,7 +38,7 @@ std::string error_of(const std::filesystem::path& file) {
 }
 
 TEST_F(EnsembleErrors, UnknownDistribution) {
-  const auto file = variant(dir_, "weibull", "distribution = \"lognormal\"", "distribution = \"weibull\"");
+  const auto file = variant("weibull", "distribution = \"lognormal\"", "distribution = \"weibull\"");
   const std::string e = error_of(file);
   EXPECT_THAT(e, HasSubstr("key uncertain.friction_decay_speed.distribution"));
   EXPECT_THAT(e, HasSubstr("\"weibull\""));
@@ -52,29 +46,29 @@ TEST_F(EnsembleErrors, UnknownDistribution) {
 }
 
 TEST_F(EnsembleErrors, NegativeBound) {
-  const auto file = variant(dir_, "negative", "low = 0.08", "low = -0.1");
+  const auto file = variant("negative", "low = 0.08", "low = -0.1");
   const std::string e = error_of(file);
   EXPECT_THAT(e, HasSubstr("key uncertain.friction_static.low"));
   EXPECT_THAT(e, HasSubstr("cannot be negative"));
 }
 
 TEST_F(EnsembleErrors, NanBound) {
-  const auto file = variant(dir_, "nan", "high = 0.8", "high = nan");
+  const auto file = variant("nan", "high = 0.8", "high = nan");
   EXPECT_THAT(error_of(file), HasSubstr("key uncertain.friction_static.high: expected a finite number"));
 }
 
 TEST_F(EnsembleErrors, EmptyStripeList) {
-  const auto file = variant(dir_, "no-stripes", "levels = [\"0.08 g\", \"0.4 g\", \"0.9 g\", \"1.6 g\"]", "levels = []");
+  const auto file = variant("no-stripes", "levels = [\"0.08 g\", \"0.4 g\", \"0.9 g\", \"1.6 g\"]", "levels = []");
   EXPECT_THAT(error_of(file), HasSubstr("key intensity.levels: expected a non-empty list"));
 }
 
 TEST_F(EnsembleErrors, ZeroRealisations) {
-  const auto file = variant(dir_, "zero", "realisations = 64", "realisations = 0");
+  const auto file = variant("zero", "realisations = 64", "realisations = 0");
   EXPECT_THAT(error_of(file), HasSubstr("key intensity.realisations: expected at least 1"));
 }
 
 TEST_F(EnsembleErrors, MissingRecord) {
-  const auto file = variant(dir_, "missing-record",
+  const auto file = variant("missing-record",
                             "kind = \"sine\"\namplitude = \"1 cm\"\nfrequency = \"1.2 Hz\"\ncycles = 3\nramp_cycles = 0.5",
                             "kind = \"record\"\nfile = \"no-such-record.AT2\"");
   const std::string e = error_of(file);
@@ -83,14 +77,14 @@ TEST_F(EnsembleErrors, MissingRecord) {
 }
 
 TEST_F(EnsembleErrors, RestitutionOutOfTheCasksReach) {
-  const auto file = variant(dir_, "restitution", "high = 0.97", "high = 0.995");
+  const auto file = variant("restitution", "high = 0.97", "high = 0.995");
   const std::string e = error_of(file);
   EXPECT_THAT(e, HasSubstr("key uncertain.restitution"));
   EXPECT_THAT(e, HasSubstr("reaches restitutions"));
 }
 
 TEST_F(EnsembleErrors, UnknownParameter) {
-  const auto file = variant(dir_, "unknown", "[uncertain.friction_static]", "[uncertain.friction_statc]");
+  const auto file = variant("unknown", "[uncertain.friction_static]", "[uncertain.friction_statc]");
   EXPECT_THAT(error_of(file), HasSubstr("unknown key uncertain.friction_statc"));
 }
 

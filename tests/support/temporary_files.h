@@ -7,6 +7,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -53,6 +54,16 @@ class TemporaryFiles : public ::testing::Test {
     const std::filesystem::path file = dir_ / name;
     std::ofstream(file, std::ios::binary) << text;
     return file;
+  }
+  // The file `source` with its first `find` replaced by `replace`, written here as `name`.
+  std::filesystem::path variant_of(const std::filesystem::path& source, const std::string& name,
+                                   const std::string& find, const std::string& replace) const {
+    std::ifstream in(source, std::ios::binary);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const auto at = text.find(find);
+    EXPECT_NE(at, std::string::npos) << source << " has no \"" << find << "\"";
+    if (at != std::string::npos) text.replace(at, find.size(), replace);
+    return write(name, text);
   }
 
   TestDirectory directory_;
