@@ -36,7 +36,6 @@ const std::string kMpirun = std::string("OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN
 
 using testing::run_shell;
 
-
 // A rank of the job writing `output`: a process whose program is caskdem (not mpirun, not a
 // shell) and whose arguments name the output file.
 pid_t find_rank(const std::string& output) {

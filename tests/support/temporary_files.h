@@ -22,11 +22,10 @@ namespace caskdem::testing {
 // process id make the name unique.
 class TestDirectory {
  public:
-  explicit TestDirectory(const std::string& label = "") {
+  TestDirectory() {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     std::string name = "caskdem_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
                        std::to_string(::getpid());
-    if (!label.empty()) name += "_" + label;
     std::replace(name.begin(), name.end(), '/', '_');  // parameterised tests' names hold '/'
     path_ = std::filesystem::temp_directory_path() / name;
     std::filesystem::remove_all(path_);
