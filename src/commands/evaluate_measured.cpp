@@ -6,7 +6,6 @@
 // parameter list prints), else from a fit in a diagnosis.json or calibration.json (--from),
 // else from the specimen's nominal values with every mechanism switched off.
 
-#include <algorithm>
 #include <charconv>
 #include <cmath>
 #include <filesystem>
@@ -124,10 +123,9 @@ nlohmann::json evaluation_json(const diagnosis::MeasuredSet& set, const diagnosi
   }
   j["tests"] = nlohmann::json::array();
   for (std::size_t t = 0; t < set.tests.size(); ++t) {
-    const bool heldout = std::find(set.heldout.begin(), set.heldout.end(), static_cast<int>(t)) != set.heldout.end();
     nlohmann::json test;
     test["name"] = set.tests[t].name;
-    test["role"] = heldout ? "heldout" : "training";
+    test["role"] = set.is_heldout(t) ? "heldout" : "training";
     test["loss"] = e.loss[t];
     for (std::size_t m = 0; m < diagnosis::measure_names().size(); ++m) {
       test["residuals"][diagnosis::measure_names()[m]] = e.residuals[t][m];
@@ -185,8 +183,8 @@ void add_evaluate_measured(CLI::App& app) {
     const std::vector<std::string>& measures = diagnosis::measure_names();
     std::cout << std::left << std::setw(12) << "test" << std::setw(10) << "role" << "loss\n";
     for (std::size_t t = 0; t < set.tests.size(); ++t) {
-      const bool heldout = std::find(set.heldout.begin(), set.heldout.end(), static_cast<int>(t)) != set.heldout.end();
-      std::cout << std::left << std::setw(12) << set.tests[t].name << std::setw(10) << (heldout ? "held-out" : "training")
+      std::cout << std::left << std::setw(12) << set.tests[t].name << std::setw(10)
+                << (set.is_heldout(t) ? "held-out" : "training")
                 << std::setprecision(4) << e.loss[t] << "\n";
       if (options->residuals) {
         for (std::size_t m = 0; m < measures.size(); ++m) {

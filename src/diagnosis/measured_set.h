@@ -10,6 +10,7 @@
 //   evaluations = 60               objective evaluations per search
 //   seed = 1
 
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -33,6 +34,10 @@ struct MeasuredSet {
   std::vector<MeasuredTest> tests;    // sorted by name
   std::vector<int> training, heldout;  // indices into tests
   bool vertical_measured = false;      // every test has a vertical channel
+
+  bool is_heldout(std::size_t test) const {
+    return std::find(heldout.begin(), heldout.end(), static_cast<int>(test)) != heldout.end();
+  }
 };
 
 // Reads specimen.toml and every *.csv in the directory; InputError naming the file and key or

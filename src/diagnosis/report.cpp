@@ -79,7 +79,7 @@ void write_histories(const std::filesystem::path& file, const MeasuredSet& set, 
   for (std::size_t t = 0; t < set.tests.size(); ++t) {
     const MeasuredTest& test = set.tests[t];
     hdf5::Group g = root.group(test.name);
-    g.attribute("heldout", std::int64_t(std::find(set.heldout.begin(), set.heldout.end(), int(t)) != set.heldout.end()));
+    g.attribute("heldout", std::int64_t(set.is_heldout(t)));
     g.write("time", test.time, "s");
     std::vector<double> rotation = test.rotation, slide = test.slide;
     // Masked samples are written as the last valid value before them: a plot shows a flat

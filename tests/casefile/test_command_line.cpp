@@ -1,7 +1,6 @@
 // The command line on bad input: one clear message on stderr naming the file and the line
 // or key, and a non-zero exit; on good input, the promised files.
 
-#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -60,12 +59,9 @@ TEST_F(CommandLine, RunWritesSummaryHistoryHdf5AndPlot) {
   EXPECT_EQ(read.status, 0);
   const std::string check = "/usr/bin/python3 -c \"import h5py; f = h5py.File('" + (out / "run.h5").string() +
                             "'); print(len(f['history/time']), f['summary'].attrs['status'])\"";
-  std::FILE* pipe = popen(check.c_str(), "r");
-  char buffer[256] = {};
-  const bool got = std::fgets(buffer, sizeof buffer, pipe) != nullptr;
-  EXPECT_EQ(pclose(pipe), 0);
-  EXPECT_TRUE(got);
-  EXPECT_THAT(std::string(buffer), HasSubstr("completed"));
+  const Outcome h5py = testing::run_shell(check);
+  EXPECT_EQ(h5py.status, 0) << h5py.output;
+  EXPECT_THAT(h5py.output, HasSubstr("completed"));
 }
 
 TEST_F(CommandLine, NoNanInResultFiles) {

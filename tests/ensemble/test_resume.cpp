@@ -8,9 +8,7 @@
 #include <unistd.h>
 
 #include <chrono>
-#include <cstdio>
 #include <filesystem>
-#include <fstream>
 #include <string>
 #include <thread>
 
@@ -29,6 +27,7 @@ namespace {
 const std::string kEnsemble = std::string(CASKDEM_SOURCE_DIR) + "/tests/ensemble/data/resume.toml";
 
 using testing::run_caskdem;
+using Resume = testing::TemporaryFiles;
 
 std::int64_t completed_in(const std::filesystem::path& file) {
   try {
@@ -38,8 +37,8 @@ std::int64_t completed_in(const std::filesystem::path& file) {
   }
 }
 
-TEST(Resume, KilledRunResumesToTheUninterruptedResult) {
-  const testing::TestDirectory directory;
+TEST_F(Resume, KilledRunResumesToTheUninterruptedResult) {
+  const auto& directory = dir_;
   const auto whole = directory / "whole.h5";
   const auto interrupted = directory / "interrupted.h5";
   ASSERT_EQ(run_caskdem("ensemble " + kEnsemble + " --out " + whole.string() + " --threads 2 --quiet --no-plot").status, 0);
@@ -102,14 +101,9 @@ TEST(Resume, KilledRunResumesToTheUninterruptedResult) {
   }
 }
 
-TEST(Resume, RefusesAFileOfAnotherEnsemble) {
-  const testing::TestDirectory directory;
-  const auto result = directory / "result.h5";
-  std::ifstream in(kEnsemble);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  text.replace(text.find("realisations = 600"), 18, "realisations = 4");
-  const auto small = directory / "small.toml";
-  std::ofstream(small) << text;
+TEST_F(Resume, RefusesAFileOfAnotherEnsemble) {
+  const auto result = dir_ / "result.h5";
+  const auto small = variant_of(kEnsemble, "small.toml", "realisations = 600", "realisations = 4");
   ASSERT_EQ(run_caskdem("ensemble " + small.string() + " --out " + result.string() + " --quiet --no-plot").status, 0);
   const testing::Outcome refused =
       run_caskdem("ensemble " + kEnsemble + " --out " + result.string() + " --resume --quiet --no-plot");
