@@ -3,16 +3,20 @@
 # mechanism (and for none), SEEDS data sets from `caskdem synthesize-measured`, each diagnosed
 # from the data alone. One CSV row per data set, then the rates per hidden effect.
 #
-#   bench/diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS]
+#   bench/diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS] [INPUTS]
+#
+# INPUTS sets [diagnosis] input_realisations (default 1: the measured table channel alone);
+# write each setting's rows to a CSV of its own.
 #
 # The seeds here start at 1001 so they are not the ones the CI tests use (101..110). About
 # 1.5 to 2 minutes per data set on 2 cores. Appends to OUT_CSV, so a stopped run resumes.
 set -eu
-build=${1:?usage: diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS]}
-out=${2:?usage: diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS]}
+build=${1:?usage: diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS] [INPUTS]}
+out=${2:?usage: diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS] [INPUTS]}
 seeds=${3:-20}
 first=${4:-1001}
 effects=${5:-"none velocity_dependent_friction amplitude_dependent_restitution eccentric_mass base_imperfection vertical_excitation floor_compliance out_of_plane_loss sensor_delay"}
+inputs=${6:-1}
 caskdem="$build/src/caskdem"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -29,6 +33,8 @@ while [ "$i" -lt "$seeds" ]; do
     else
       "$caskdem" synthesize-measured --out "$dir" --seed "$seed" --effect "$effect" >/dev/null
     fi
+    # The generator's specimen.toml ends with its [diagnosis] table.
+    [ "$inputs" = 1 ] || echo "input_realisations = $inputs" >>"$dir/specimen.toml"
     "$caskdem" diagnose "$dir" --out "$dir/diagnosis" --quiet --no-plot >/dev/null
     /usr/bin/python3 - "$dir/diagnosis/diagnosis.json" "$effect" "$seed" >>"$out" <<'PY'
 import json, sys

@@ -15,33 +15,55 @@ namespace {
 // each test's own predictability around the specimen's nominal parameters.
 constexpr int kPredictabilityRealisations = 8;
 
-std::vector<TestReference> references_of(const MeasuredSet& set) {
+// What every model of a diagnosis is judged by: each test's tolerances and the table inputs it
+// is simulated with (the measured channel, then noisy copies; measures.h, marginal_loss).
+struct Yardstick {
+  std::vector<TestReference> references;          // per test
+  std::vector<std::vector<MeasuredTest>> inputs;  // per test, per input realisation
+};
+
+Yardstick yardstick_of(const MeasuredSet& set) {
   const ModelVariant baseline(set.specimen, {}, set.vertical_measured);
-  std::vector<TestReference> references;
-  for (const MeasuredTest& t : set.tests) references.push_back(reference_of(t, baseline.model().stability_angle));
-  add_predictability(references, set.tests, baseline, baseline.reference(), kPredictabilityRealisations, set.settings.seed);
-  return references;
+  Yardstick y;
+  for (std::size_t t = 0; t < set.tests.size(); ++t) {
+    y.references.push_back(reference_of(set.tests[t], baseline.model().stability_angle));
+    y.inputs.push_back(input_realisations(set.tests[t], t, set.settings.input_realisations, set.settings.seed));
+  }
+  add_predictability(y.references, set.tests, baseline, baseline.reference(), kPredictabilityRealisations,
+                     set.settings.seed);
+  return y;
 }
 
-// J for every point over the given tests; the tests run in parallel, each as one block of lanes.
-std::vector<double> objective_over(const MeasuredSet& set, const std::vector<TestReference>& references,
-                                   const ModelVariant& variant, const std::vector<int>& tests,
-                                   const std::vector<std::vector<double>>& points, const DiagnosisOptions& options,
-                                   std::vector<std::vector<double>>* per_test = nullptr) {
+// Every test's loss and residuals at one point. The residuals are those of the input
+// realisation whose response lands nearest the measured one (the measured channel's, R = 1).
+struct Judged {
+  std::vector<double> loss;                    // per test
+  std::vector<std::vector<double>> residuals;  // per test, per measure
+};
+
+// J for every point over the given tests; each (test, input realisation) runs as one block of
+// lanes, in parallel.
+std::vector<double> objective_over(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant,
+                                   const std::vector<int>& tests, const std::vector<std::vector<double>>& points,
+                                   const DiagnosisOptions& options, Judged* first_point = nullptr) {
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-  std::vector<std::vector<double>> contribution(tests.size(), std::vector<double>(points.size(), 0.0));
-  if (per_test) per_test->assign(tests.size(), {});
+  const std::size_t inputs = static_cast<std::size_t>(std::max(1, set.settings.input_realisations));
+  const std::size_t runs = tests.size() * inputs;
+  std::vector<std::vector<double>> loss(runs, std::vector<double>(points.size(), 0.0));
+  std::vector<std::vector<double>> first_residuals(runs);
   std::exception_ptr failure;
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (std::size_t i = 0; i < tests.size(); ++i) {
+  for (std::size_t i = 0; i < runs; ++i) {
     try {
-      const MeasuredTest& test = set.tests[tests[i]];
-      const std::vector<SimulatedHistory> histories = simulate_test(variant, test, points, options.isa);
+      const int t = tests[i / inputs];
+      const MeasuredTest& input = yardstick.inputs[t][i % inputs];
+      const std::vector<SimulatedHistory> histories = simulate_test(variant, input, points, options.isa);
       for (std::size_t p = 0; p < points.size(); ++p) {
-        const std::vector<double> r =
-            residuals(test, references[tests[i]], delayed(histories[p], test.time, variant.sensor_delay(points[p])));
-        contribution[i][p] = robust_loss(r);
-        if (per_test && p == 0) (*per_test)[i] = r;  // the first point's residuals, test by test
+        // Judged against the measured test (its response channels), whatever the input.
+        const std::vector<double> r = residuals(set.tests[t], yardstick.references[t],
+                                                delayed(histories[p], input.time, variant.sensor_delay(points[p])));
+        loss[i][p] = robust_loss(r);
+        if (first_point && p == 0) first_residuals[i] = r;
       }
     } catch (...) {
 #pragma omp critical
@@ -49,35 +71,49 @@ std::vector<double> objective_over(const MeasuredSet& set, const std::vector<Tes
     }
   }
   if (failure) std::rethrow_exception(failure);
+  if (first_point) {
+    first_point->loss.assign(set.tests.size(), 0.0);
+    first_point->residuals.assign(set.tests.size(), {});
+  }
   // Summed over tests in a fixed order, whatever the threads.
   std::vector<double> total(points.size(), 0.0);
-  for (std::size_t i = 0; i < tests.size(); ++i) {
-    for (std::size_t p = 0; p < points.size(); ++p) total[p] += contribution[i][p];
+  std::vector<double> per_input(inputs);
+  for (std::size_t k = 0; k < tests.size(); ++k) {
+    for (std::size_t p = 0; p < points.size(); ++p) {
+      for (std::size_t r = 0; r < inputs; ++r) per_input[r] = loss[k * inputs + r][p];
+      const double test_loss = marginal_loss(per_input);  // the input's own loss when R = 1
+      total[p] += test_loss;
+      if (first_point && p == 0) {
+        const auto nearest = std::min_element(per_input.begin(), per_input.end()) - per_input.begin();
+        first_point->loss[tests[k]] = test_loss;
+        first_point->residuals[tests[k]] = first_residuals[k * inputs + nearest];
+      }
+    }
   }
   return total;
 }
 
 // The error over some tests: sqrt of the mean loss per residual (the RMS of the residuals where
 // they are within a few tolerances).
-double error_of(const std::vector<std::vector<double>>& residuals, const std::vector<int>& tests) {
+double error_of(const std::vector<double>& loss, const std::vector<std::vector<double>>& residuals,
+                const std::vector<int>& tests) {
   double sum = 0.0;
   std::size_t count = 0;
   for (int t : tests) {
-    sum += robust_loss(residuals[t]);
+    sum += loss[t];
     count += residuals[t].size();
   }
   return count > 0 ? std::sqrt(sum / double(count)) : 0.0;
 }
 
-// Every test's residuals at one point (the tests in parallel).
-std::vector<std::vector<double>> residuals_at(const MeasuredSet& set, const std::vector<TestReference>& references,
-                                              const ModelVariant& variant, const std::vector<double>& point,
-                                              const DiagnosisOptions& options) {
+// Every test's loss and residuals at one point (the tests in parallel).
+Judged judge_at(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant,
+                const std::vector<double>& point, const DiagnosisOptions& options) {
   std::vector<int> all(set.tests.size());
   std::iota(all.begin(), all.end(), 0);
-  std::vector<std::vector<double>> per_test;
-  (void)objective_over(set, references, variant, all, {point}, options, &per_test);
-  return per_test;
+  Judged judged;
+  (void)objective_over(set, yardstick, variant, all, {point}, options, &judged);
+  return judged;
 }
 
 // The scaled residuals a training objective sums: every measure of every training test.
@@ -95,7 +131,7 @@ double aic_of(double j, double n, std::size_t k) {
 
 // Fits a model; its searches start from `starts` (the model it extends, mechanism off) and from
 // the specimen's nominal values (mechanism off).
-ModelFit fit_variant(const MeasuredSet& set, const std::vector<TestReference>& references, const ModelVariant& variant,
+ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant,
                      std::vector<std::vector<double>> starts, const DiagnosisOptions& options) {
   ModelFit m;
   m.mechanisms = variant.mechanisms();
@@ -103,7 +139,7 @@ ModelFit fit_variant(const MeasuredSet& set, const std::vector<TestReference>& r
   m.parameters = variant.parameters();
   m.training_residual_count = training_residual_count(set);
   const PopulationObjective objective = [&](const std::vector<std::vector<double>>& points) {
-    return objective_over(set, references, variant, set.training, points, options);
+    return objective_over(set, yardstick, variant, set.training, points, options);
   };
   FitOptions fit_options;
   fit_options.starts = set.settings.starts;
@@ -113,10 +149,12 @@ ModelFit fit_variant(const MeasuredSet& set, const std::vector<TestReference>& r
   if (std::find(starts.begin(), starts.end(), nominal) == starts.end()) starts.push_back(nominal);
   m.fit = fit_parameters(m.parameters, starts, objective, fit_options, m.training_residual_count);
 
-  m.residuals = residuals_at(set, references, variant, m.fit.best, options);
+  Judged judged = judge_at(set, yardstick, variant, m.fit.best, options);
+  m.loss = std::move(judged.loss);
+  m.residuals = std::move(judged.residuals);
   m.bic = bic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
   m.aic = aic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
-  m.heldout_error = error_of(m.residuals, set.heldout);
+  m.heldout_error = error_of(m.loss, m.residuals, set.heldout);
   return m;
 }
 
@@ -128,7 +166,7 @@ CandidateScore score(const MeasuredSet& set, Mechanism mechanism, ModelFit model
   s.bic_delta = model.bic - against.bic;
   s.aic_delta = model.aic - against.aic;
   for (int t : set.heldout) {
-    s.heldout_tests_improved += robust_loss(model.residuals[t]) < robust_loss(against.residuals[t]);
+    s.heldout_tests_improved += model.loss[t] < against.loss[t];
   }
   for (std::size_t m = 0; m < measure_names().size(); ++m) {
     double mine = 0.0, theirs = 0.0;
@@ -289,18 +327,17 @@ std::vector<SimulatedHistory> fitted_histories(const MeasuredSet& set, const Mod
 
 namespace {
 
-ModelFit fit_baseline(const MeasuredSet& set, const std::vector<TestReference>& references,
-                      const DiagnosisOptions& options) {
+ModelFit fit_baseline(const MeasuredSet& set, const Yardstick& yardstick, const DiagnosisOptions& options) {
   const ModelVariant baseline(set.specimen, {}, set.vertical_measured);
   say(options, "fitting the baseline (friction, damping ratio, stiffness scale) on " +
                    std::to_string(set.training.size()) + " training tests");
-  return fit_variant(set, references, baseline, {baseline.reference()}, options);
+  return fit_variant(set, yardstick, baseline, {baseline.reference()}, options);
 }
 
 }  // namespace
 
 ModelFit calibrate_baseline(const MeasuredSet& set, const DiagnosisOptions& options) {
-  return fit_baseline(set, references_of(set), options);
+  return fit_baseline(set, yardstick_of(set), options);
 }
 
 PointEvaluation evaluate_point(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms,
@@ -314,13 +351,14 @@ PointEvaluation evaluate_point(const MeasuredSet& set, const std::vector<Mechani
   e.model = variant.name();
   e.parameters = variant.parameters();
   e.point = point;
-  e.residuals = residuals_at(set, references_of(set), variant, point, options);
-  for (const std::vector<double>& r : e.residuals) e.loss.push_back(robust_loss(r));
+  Judged judged = judge_at(set, yardstick_of(set), variant, point, options);
+  e.residuals = std::move(judged.residuals);
+  e.loss = std::move(judged.loss);
   // Summed in the order of the training tests, as the fits' objective is.
   for (int t : set.training) e.training_objective += e.loss[t];
   e.training_residual_count = training_residual_count(set);
   e.bic = bic_of(e.training_objective, e.training_residual_count, e.parameters.size());
-  e.heldout_error = error_of(e.residuals, set.heldout);
+  e.heldout_error = error_of(e.loss, e.residuals, set.heldout);
   return e;
 }
 
@@ -329,10 +367,10 @@ Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {
   Diagnosis d;
   say(options, "judging how predictable each test is (" + std::to_string(kPredictabilityRealisations) +
                    " simulations per test with fresh input noise)");
-  const std::vector<TestReference> references = references_of(set);
-  d.baseline = fit_baseline(set, references, options);
+  const Yardstick yardstick = yardstick_of(set);
+  d.baseline = fit_baseline(set, yardstick, options);
   const ModelVariant baseline_variant(set.specimen, {}, set.vertical_measured);
-  d.structure = residual_structure(set, references, d.baseline, baseline_variant.model(),
+  d.structure = residual_structure(set, yardstick.references, d.baseline, baseline_variant.model(),
                                    fitted_histories(set, d.baseline, options.isa));
 
   for (Mechanism m : all_mechanisms()) {
@@ -340,7 +378,7 @@ Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {
     say(options, "fitting " + variant.name());
     CandidateScore candidate;
     candidate.mechanism = m;
-    candidate.model = fit_variant(set, references, variant, {variant.reference(&d.baseline.fit.best)}, options);
+    candidate.model = fit_variant(set, yardstick, variant, {variant.reference(&d.baseline.fit.best)}, options);
     d.ranking.push_back(std::move(candidate));
   }
   // The baseline again, from every candidate's baseline parameters: a candidate that fitted
@@ -352,7 +390,7 @@ Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {
       starts.emplace_back(c.model.fit.best.begin(), c.model.fit.best.begin() + baseline_variant.baseline_size());
     }
     say(options, "refitting the baseline from the candidates' baseline parameters");
-    ModelFit refined = fit_variant(set, references, baseline_variant, starts, options);
+    ModelFit refined = fit_variant(set, yardstick, baseline_variant, starts, options);
     if (refined.fit.objective < d.baseline.fit.objective) d.baseline = std::move(refined);
   }
   for (CandidateScore& c : d.ranking) {
@@ -378,7 +416,7 @@ Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {
             if (variant.parameters()[j].name == first.parameters[i].name) reference[j] = first.fit.best[i];
           }
         }
-        ModelFit fitted = fit_variant(set, references, variant, {reference}, options);
+        ModelFit fitted = fit_variant(set, yardstick, variant, {reference}, options);
         if (fitted.fit.objective > first.fit.objective) fitted = switched_off(first, variant);
         d.second_ranking.push_back(score(set, m, std::move(fitted), first, options));
       }

@@ -13,7 +13,8 @@
 //     charges the extra parameters: with N scaled residuals, their loss J (pseudo-Huber:
 //     squares within a few tolerances; src/diagnosis/measures.h) and k parameters,
 //     BIC = N ln(J/N) + k ln N (Gaussian residuals of unknown common variance where the loss
-//     is quadratic).
+//     is quadratic). A test simulated with several table inputs (input_realisations) adds its
+//     marginal loss (measures.h) in place of one input's loss.
 //  5. The cause is the mechanism with the largest held-out gain among the significant ones:
 //     held-out gain >= minimum_gain, BIC lower by at least -maximum_bic_delta, and the held-out
 //     error lower on at least half of the held-out tests. None significant: "none", the model
@@ -50,6 +51,7 @@ struct ModelFit {
   double bic = 0.0;
   double aic = 0.0;
   std::vector<std::vector<double>> residuals;  // per test (all tests), per measure, at the fitted point
+  std::vector<double> loss;                    // per test (all tests), at the fitted point (measures.h, marginal_loss)
   double heldout_error = 0.0;                  // sqrt(loss per residual) over the held-out tests
 };
 

@@ -41,6 +41,9 @@ Case read_specimen(const std::filesystem::path& specimen, DiagnosisSettings* set
     s.starts = static_cast<int>(starts);
     s.evaluations = static_cast<int>(evaluations);
     s.seed = static_cast<std::uint64_t>(seed);
+    const long input_realisations = t.optional_integer("input_realisations").value_or(1);
+    if (input_realisations < 1 || input_realisations > 64) t.fail("input_realisations", "expected 1 to 64 table inputs per test");
+    s.input_realisations = static_cast<int>(input_realisations);
     t.reject_unknown_keys();
   }
   root.reject_unknown_keys();

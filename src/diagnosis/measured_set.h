@@ -9,6 +9,9 @@
 //   starts = 8                     parallel local searches per fit (SIMD lanes of a population)
 //   evaluations = 60               objective evaluations per search
 //   seed = 1
+//   input_realisations = 1         table inputs each test is simulated with: the measured
+//                                  channel, then the channel plus fresh noise at its own level
+//                                  (src/diagnosis/diagnose.h, "the loss of a test")
 
 #include <algorithm>
 #include <filesystem>
@@ -25,6 +28,7 @@ struct DiagnosisSettings {
   int starts = 8;
   int evaluations = 60;
   std::uint64_t seed = 1;
+  int input_realisations = 1;
 };
 
 struct MeasuredSet {

@@ -209,5 +209,12 @@ double robust_loss(const std::vector<double>& residuals) {
   return sum;
 }
 
+double marginal_loss(const std::vector<double>& losses) {
+  const double best = *std::min_element(losses.begin(), losses.end());
+  if (!std::isfinite(best)) return best;
+  double sum = 0.0;
+  for (double j : losses) sum += std::exp(-0.5 * (j - best));  // fixed order: the realisations'
+  return best - 2.0 * std::log(sum / double(losses.size()));
+}
 
 }  // namespace caskdem::diagnosis

@@ -64,6 +64,12 @@ TestReference reference_of(const MeasuredTest& test, double stability_angle);
 void add_predictability(std::vector<TestReference>& references, const std::vector<MeasuredTest>& tests,
                         const ModelVariant& variant, const std::vector<double>& x, int realisations, std::uint64_t seed);
 
+// The table inputs a test is judged with: the measured channel first, then `count - 1` copies
+// with fresh noise at the level estimated from the channel (the same draws at every point a
+// fit tries, so that its objective is a function of the parameters alone).
+std::vector<MeasuredTest> input_realisations(const MeasuredTest& test, std::size_t test_index, int count,
+                                             std::uint64_t seed);
+
 // Features of a history sampled at the test's times; samples where `valid` is 0 are skipped.
 Features features_of(const std::vector<double>& time, const std::vector<double>& rotation,
                      const std::vector<double>& slide, const std::vector<std::uint8_t>* rotation_valid,
@@ -83,5 +89,17 @@ std::vector<double> residuals(const MeasuredTest& test, const TestReference& ref
 // parameter space a haystack whose only broad basin is the wrong one.
 double robust_loss(const std::vector<double>& residuals);
 inline constexpr double kRobustScale = 3.0;
+
+// The loss of a test simulated with R table inputs (input_realisations: the measured channel
+// and R - 1 noisy copies) with losses J_r: read as -2 ln of a likelihood, exp(-J/2), averaged
+// over the inputs the measured channel is consistent with,
+//   L = -2 ln( (1/R) sum_r exp(-J_r / 2) ) = J_min - 2 ln( (1/R) sum_r exp(-(J_r - J_min)/2) ),
+// between J_min and J_min + 2 ln R: a model is charged for how seldom its response lands near
+// the measured one, not for how far one input's response lands from it. A chaotic test whose
+// response jumps between branches under the table channel's noise then stops deciding a fit
+// by which branch the measured channel's own noise happens to select (Monte Carlo
+// marginalisation of the unknown true input; Diggle & Gratton 1984, simulated likelihood).
+// R = 1 gives J itself.
+double marginal_loss(const std::vector<double>& losses);
 
 }  // namespace caskdem::diagnosis

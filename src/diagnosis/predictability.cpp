@@ -40,6 +40,21 @@ constexpr double kParameterSpread[] = {0.02, 0.1, 0.1};
 
 }  // namespace
 
+std::vector<MeasuredTest> input_realisations(const MeasuredTest& test, std::size_t test_index, int count,
+                                             std::uint64_t seed) {
+  std::vector<MeasuredTest> inputs(static_cast<std::size_t>(std::max(1, count)), test);
+  const double noise = channel_noise(test.table_acceleration);
+  for (std::size_t r = 1; r < inputs.size(); ++r) {
+    std::vector<double>& a = inputs[r].table_acceleration;
+    // Counter 0x1a7e: streams of their own, apart from the predictability realisations'.
+    for (std::size_t k = 0; k < a.size(); ++k) {
+      a[k] += noise * philox_normal(seed, {static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(r),
+                                           static_cast<std::uint32_t>(test_index), 0x1a7e});
+    }
+  }
+  return inputs;
+}
+
 void add_predictability(std::vector<TestReference>& references, const std::vector<MeasuredTest>& tests,
                         const ModelVariant& variant, const std::vector<double>& x, int realisations, std::uint64_t seed) {
   const std::size_t measures = measure_names().size();

@@ -102,6 +102,12 @@ void write_histories(const std::filesystem::path& file, const MeasuredSet& set, 
   }
 }
 
+// The [diagnosis] settings the numbers came from, so that a run can be repeated.
+nlohmann::json settings_json(const DiagnosisSettings& s) {
+  return {{"starts", s.starts}, {"evaluations", s.evaluations}, {"seed", s.seed},
+          {"input_realisations", s.input_realisations}};
+}
+
 }  // namespace
 
 void write_calibration(const std::filesystem::path& directory, const MeasuredSet& set, const ModelFit& baseline) {
@@ -111,6 +117,7 @@ void write_calibration(const std::filesystem::path& directory, const MeasuredSet
   j["measured_data"] = set.directory.string();
   for (int t : set.training) j["training_tests"].push_back(set.tests[t].name);
   for (int t : set.heldout) j["heldout_tests"].push_back(set.tests[t].name);
+  j["settings"] = settings_json(set.settings);
   std::ofstream(directory / "calibration.json") << j.dump(2) << "\n";
 }
 
@@ -124,6 +131,7 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   j["second_cause"] = d.second_cause.empty() ? nlohmann::json(nullptr) : nlohmann::json(d.second_cause);
   for (int t : set.training) j["tests"]["training"].push_back(set.tests[t].name);
   for (int t : set.heldout) j["tests"]["heldout"].push_back(set.tests[t].name);
+  j["settings"] = settings_json(set.settings);
   j["data_issues"] = nlohmann::json::array();
   for (const MeasuredTest& t : set.tests) {
     for (const std::string& issue : t.issues) j["data_issues"].push_back(issue);

@@ -4,10 +4,13 @@
 // with the held-out tests must agree within their tolerances (RMS below 1), and a floor too
 // slippery for the cask to rock (friction 0.08, far below the rocking threshold b/h = 0.47
 // of the 1/3 model cask) must not. At a fit's own point the evaluation gives the fit's
-// numbers, so a user can set any point beside the fit. Bad values on the command line get one
+// numbers (with one table input per test or several), so a user can set any point beside the
+// fit; with R table inputs a test costs at most 2 ln R more than with the measured channel
+// alone, the bound of the marginal loss. Bad values on the command line get one
 // message naming the option and what was expected.
 
 #include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -65,9 +68,35 @@ TEST(EvaluatePoint, TheTrueValuesAgreeWithinTolerancesAndASlipperyFloorDoesNot) 
   EXPECT_GT(sliding.training_objective, at_truth.training_objective);
 }
 
-TEST(EvaluatePoint, AtAFitsOwnPointItGivesTheFitsNumbers) {
+TEST(EvaluatePoint, MoreTableInputsChargeEachTestAtMostTwiceTheLogOfTheirNumberMore) {
+  // With R inputs a test's loss is at most J_min + 2 ln R, and J_min is at most the measured
+  // channel's own J, the one input of R = 1 (measures.h, marginal_loss).
   const TestDirectory directory;
-  const MeasuredSet set = read_measured_set(synthetic_set(directory, 2));
+  SyntheticTruth truth;
+  MeasuredSet set = read_measured_set(synthetic_set(directory, 1, &truth));
+  DiagnosisOptions options;
+  options.threads = 2;
+  const std::vector<double> true_point = {value_of(truth, "friction"), value_of(truth, "damping_ratio"),
+                                          value_of(truth, "stiffness_scale")};
+  const PointEvaluation one = evaluate_point(set, {}, true_point, options);
+  set.settings.input_realisations = 4;
+  const PointEvaluation four = evaluate_point(set, {}, true_point, options);
+  ASSERT_EQ(four.loss.size(), one.loss.size());
+  int changed = 0;
+  for (std::size_t t = 0; t < one.loss.size(); ++t) {
+    EXPECT_LE(four.loss[t], one.loss[t] + 2.0 * std::log(4.0) + 1e-12) << set.tests[t].name;
+    EXPECT_GE(four.loss[t], 0.0) << set.tests[t].name;
+    changed += four.loss[t] != one.loss[t];
+  }
+  EXPECT_GT(changed, 0);  // the noisy inputs are simulated, not copies of the measured channel
+}
+
+class AtAFitsOwnPoint : public ::testing::TestWithParam<int> {};
+
+TEST_P(AtAFitsOwnPoint, ItGivesTheFitsNumbers) {
+  const TestDirectory directory;
+  MeasuredSet set = read_measured_set(synthetic_set(directory, 2));
+  set.settings.input_realisations = GetParam();
   DiagnosisOptions options;
   options.threads = 2;
   const ModelFit fit = calibrate_baseline(set, options);
@@ -77,7 +106,10 @@ TEST(EvaluatePoint, AtAFitsOwnPointItGivesTheFitsNumbers) {
   EXPECT_EQ(e.heldout_error, fit.heldout_error);
   EXPECT_EQ(e.bic, fit.bic);
   EXPECT_EQ(e.residuals, fit.residuals);
+  EXPECT_EQ(e.loss, fit.loss);
 }
+
+INSTANTIATE_TEST_SUITE_P(TableInputs, AtAFitsOwnPoint, ::testing::Values(1, 3));
 
 using testing::Outcome;
 using testing::run_caskdem;

@@ -99,5 +99,13 @@ TEST_F(MeasuredSetDirectory, EveryTestHeldOutLeavesNothingToFit) {
   EXPECT_THAT(error_of(), AllOf(HasSubstr("specimen.toml"), HasSubstr("training"), HasSubstr("got 0 and 2")));
 }
 
+TEST_F(MeasuredSetDirectory, InputRealisationsOutOfRangeAreNamed) {
+  write("specimen.toml", kSpecimen + "[diagnosis]\ninput_realisations = 0\n");
+  write("run_a.csv", test_csv());
+  write("run_b.csv", test_csv());
+  EXPECT_THAT(error_of(), AllOf(HasSubstr("specimen.toml"), HasSubstr("diagnosis.input_realisations"),
+                                HasSubstr("expected 1 to 64")));
+}
+
 }  // namespace
 }  // namespace caskdem::diagnosis

@@ -176,5 +176,45 @@ TEST(Measures, RobustLossIsQuadraticNearZeroAndLinearFarOut) {
   EXPECT_NEAR(robust_loss({1.0, -1.0}), 2.0 * robust_loss({1.0}), 1e-15);
 }
 
+TEST(Measures, MarginalLossIsMinusTwiceTheLogOfTheMeanLikelihood) {
+  // L = -2 ln((1/R) sum exp(-J_r / 2)): one input gives J; equal losses give J; otherwise L
+  // lies between J_min and J_min + 2 ln R, the upper end reached when one input alone lands
+  // near the measurement.
+  EXPECT_DOUBLE_EQ(marginal_loss({7.5}), 7.5);
+  EXPECT_NEAR(marginal_loss({3.0, 3.0, 3.0, 3.0}), 3.0, 1e-14);
+  EXPECT_NEAR(marginal_loss({1.0, 2.0}), -2.0 * std::log(0.5 * (std::exp(-0.5) + std::exp(-1.0))), 1e-14);
+  const double lone = marginal_loss({2.0, 2000.0, 4000.0, 1e6});
+  EXPECT_NEAR(lone, 2.0 + 2.0 * std::log(4.0), 1e-12);  // no overflow or underflow far out
+  EXPECT_LT(marginal_loss({2.0, 3.0, 50.0, 9.0}), lone);
+}
+
+TEST(Measures, InputRealisationsKeepTheMeasuredChannelFirstAndAddNoiseAtItsLevel) {
+  // A smooth table channel plus white noise of known level: the copies after the first carry
+  // fresh noise of that level, the same for the same seed and test, other noise for another
+  // test index.
+  MeasuredTest test = measured(sine(kAmplitude), settling_slide(0.0));
+  const double sigma = 0.01;
+  std::mt19937_64 generator(5);
+  std::normal_distribution<double> noise(0.0, sigma);
+  test.table_acceleration = sine(1.0);
+  for (double& a : test.table_acceleration) a += noise(generator);
+  const std::vector<MeasuredTest> inputs = input_realisations(test, 3, 4, 11);
+  ASSERT_EQ(inputs.size(), 4u);
+  EXPECT_EQ(inputs[0].table_acceleration, test.table_acceleration);
+  for (std::size_t r = 1; r < inputs.size(); ++r) {
+    double ss = 0.0;
+    for (int k = 0; k < kSamples; ++k) {
+      const double added = inputs[r].table_acceleration[k] - test.table_acceleration[k];
+      ss += added * added;
+    }
+    // The level is estimated from the channel's second differences: within 10 % at 2000 samples.
+    EXPECT_NEAR(std::sqrt(ss / kSamples), sigma, 0.1 * sigma);
+    EXPECT_EQ(inputs[r].rotation, test.rotation);
+  }
+  EXPECT_EQ(input_realisations(test, 3, 4, 11)[2].table_acceleration, inputs[2].table_acceleration);
+  EXPECT_NE(input_realisations(test, 4, 4, 11)[2].table_acceleration, inputs[2].table_acceleration);
+  EXPECT_NE(inputs[1].table_acceleration, inputs[2].table_acceleration);
+}
+
 }  // namespace
 }  // namespace caskdem::diagnosis
