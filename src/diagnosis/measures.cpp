@@ -6,8 +6,6 @@
 
 namespace caskdem::diagnosis {
 
-namespace {
-
 double noise_level(const std::vector<double>& x, const std::vector<std::uint8_t>* valid) {
   double sum = 0.0;
   int count = 0;
@@ -19,6 +17,8 @@ double noise_level(const std::vector<double>& x, const std::vector<std::uint8_t>
   }
   return count > 0 ? std::sqrt(sum / count / 6.0) : 0.0;
 }
+
+namespace {
 
 double rms(const std::vector<double>& x, const std::vector<std::uint8_t>* valid) {
   double sum = 0.0;

@@ -56,6 +56,10 @@ struct TestReference {
   std::vector<double> tolerance;   // per measure
 };
 
+// White-noise level of a sampled signal from its second differences, std(x[k+1] - 2 x[k] +
+// x[k-1]) / sqrt(6), over the samples whose neighbours are valid (all when `valid` is null).
+double noise_level(const std::vector<double>& x, const std::vector<std::uint8_t>* valid = nullptr);
+
 TestReference reference_of(const MeasuredTest& test, double stability_angle);
 
 // Adds to each test's tolerances the spread of its measures over `realisations` simulations

@@ -20,18 +20,20 @@ namespace caskdem::diagnosis {
 
 namespace {
 
-double channel_noise(const std::vector<double>& x) {
-  double sum = 0.0;
-  for (std::size_t k = 1; k + 1 < x.size(); ++k) {
-    const double d = x[k + 1] - 2.0 * x[k] + x[k - 1];
-    sum += d * d;
-  }
-  return x.size() > 2 ? std::sqrt(sum / double(x.size() - 2) / 6.0) : 0.0;
+// Philox streams (the counter's last word): the predictability realisations' draws, and the
+// noisy table inputs a test is judged with.
+constexpr std::uint32_t kPredictabilityStream = 0x9ed1, kInputStream = 0x1a7e;
+
+double normal(std::uint64_t seed, std::uint64_t test, std::uint64_t realisation, std::uint64_t sample,
+              std::uint32_t stream = kPredictabilityStream) {
+  return philox_normal(seed, {static_cast<std::uint32_t>(sample), static_cast<std::uint32_t>(realisation),
+                              static_cast<std::uint32_t>(test), stream});
 }
 
-double normal(std::uint64_t seed, std::uint64_t test, std::uint64_t realisation, std::uint64_t sample) {
-  return philox_normal(seed, {static_cast<std::uint32_t>(sample), static_cast<std::uint32_t>(realisation),
-                              static_cast<std::uint32_t>(test), 0x9ed1});
+// Fresh white noise of level `noise` on a table channel, drawn per (test, realisation, sample).
+void add_table_noise(std::vector<double>& channel, double noise, std::uint64_t seed, std::size_t test,
+                     std::size_t realisation, std::uint32_t stream) {
+  for (std::size_t k = 0; k < channel.size(); ++k) channel[k] += noise * normal(seed, test, realisation, k, stream);
 }
 
 // Relative spread of the baseline parameters (friction, damping ratio, stiffness scale) over the
@@ -43,14 +45,9 @@ constexpr double kParameterSpread[] = {0.02, 0.1, 0.1};
 std::vector<MeasuredTest> input_realisations(const MeasuredTest& test, std::size_t test_index, int count,
                                              std::uint64_t seed) {
   std::vector<MeasuredTest> inputs(static_cast<std::size_t>(std::max(1, count)), test);
-  const double noise = channel_noise(test.table_acceleration);
+  const double noise = noise_level(test.table_acceleration);
   for (std::size_t r = 1; r < inputs.size(); ++r) {
-    std::vector<double>& a = inputs[r].table_acceleration;
-    // Counter 0x1a7e: streams of their own, apart from the predictability realisations'.
-    for (std::size_t k = 0; k < a.size(); ++k) {
-      a[k] += noise * philox_normal(seed, {static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(r),
-                                           static_cast<std::uint32_t>(test_index), 0x1a7e});
-    }
+    add_table_noise(inputs[r].table_acceleration, noise, seed, test_index, r, kInputStream);
   }
   return inputs;
 }
@@ -60,7 +57,7 @@ void add_predictability(std::vector<TestReference>& references, const std::vecto
   const std::size_t measures = measure_names().size();
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::size_t t = 0; t < tests.size(); ++t) {
-    const double noise = channel_noise(tests[t].table_acceleration);
+    const double noise = noise_level(tests[t].table_acceleration);
     std::vector<std::vector<double>> values(measures);
     for (int r = 0; r < realisations; ++r) {
       // The same parameter draw for every test of a realisation (counter "test" 0xffff).
@@ -70,9 +67,7 @@ void add_predictability(std::vector<TestReference>& references, const std::vecto
         moved[i] = std::clamp(x[i] * std::exp(kParameterSpread[i] * normal(seed, 0xffff, r, i)), p.low, p.high);
       }
       MeasuredTest perturbed = tests[t];
-      for (std::size_t k = 0; k < perturbed.table_acceleration.size(); ++k) {
-        perturbed.table_acceleration[k] += noise * normal(seed, t, r, k);
-      }
+      add_table_noise(perturbed.table_acceleration, noise, seed, t, r, kPredictabilityStream);
       const SimulatedHistory h = delayed(simulate_test(variant, perturbed, {moved}, InstructionSet::automatic)[0],
                                          perturbed.time, variant.sensor_delay(moved));
       // Residual times tolerance: the raw difference of each measure from the measured value.
