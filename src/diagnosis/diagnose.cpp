@@ -47,7 +47,8 @@ std::vector<double> objective_over(const MeasuredSet& set, const Yardstick& yard
                                    const std::vector<int>& tests, const std::vector<std::vector<double>>& points,
                                    const DiagnosisOptions& options, Judged* first_point = nullptr) {
   const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-  const std::size_t inputs = static_cast<std::size_t>(std::max(1, set.settings.input_realisations));
+  // Every test has as many inputs as the yardstick made for it (input_realisations).
+  const std::size_t inputs = yardstick.inputs.front().size();
   const std::size_t runs = tests.size() * inputs;
   std::vector<std::vector<double>> loss(runs, std::vector<double>(points.size(), 0.0));
   std::vector<std::vector<double>> first_residuals(runs);

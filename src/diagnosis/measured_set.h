@@ -11,7 +11,7 @@
 //   seed = 1
 //   input_realisations = 1         table inputs each test is simulated with: the measured
 //                                  channel, then the channel plus fresh noise at its own level
-//                                  (src/diagnosis/diagnose.h, "the loss of a test")
+//                                  (src/diagnosis/measures.h, marginal_loss)
 
 #include <algorithm>
 #include <filesystem>
