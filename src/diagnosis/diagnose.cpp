@@ -145,6 +145,7 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
   FitOptions fit_options;
   fit_options.starts = set.settings.starts;
   fit_options.evaluations = set.settings.evaluations;
+  fit_options.exploration = set.settings.exploration;
   fit_options.seed = set.settings.seed;
   const std::vector<double> nominal = variant.reference();
   if (std::find(starts.begin(), starts.end(), nominal) == starts.end()) starts.push_back(nominal);

@@ -36,10 +36,13 @@ Case read_specimen(const std::filesystem::path& specimen, DiagnosisSettings* set
     if (starts < 1 || starts > 64) t.fail("starts", "expected 1 to 64 searches");
     const long evaluations = t.optional_integer("evaluations").value_or(60);
     if (evaluations < 10 || evaluations > 5000) t.fail("evaluations", "expected 10 to 5000 evaluations");
+    const long exploration = t.optional_integer("exploration").value_or(192);
+    if (exploration < 16 || exploration > 100000) t.fail("exploration", "expected 16 to 100000 points");
     const long seed = t.optional_integer("seed").value_or(1);
     if (seed < 0) t.fail("seed", "expected a non-negative whole number");
     s.starts = static_cast<int>(starts);
     s.evaluations = static_cast<int>(evaluations);
+    s.exploration = static_cast<int>(exploration);
     s.seed = static_cast<std::uint64_t>(seed);
     const long input_realisations = t.optional_integer("input_realisations").value_or(1);
     if (input_realisations < 1 || input_realisations > 64) t.fail("input_realisations", "expected 1 to 64 table inputs per test");

@@ -8,6 +8,7 @@
 //                                  every third test, starting with the second)
 //   starts = 8                     parallel local searches per fit (SIMD lanes of a population)
 //   evaluations = 60               objective evaluations per search
+//   exploration = 192              points of each fit's first, exploring population
 //   seed = 1
 //   input_realisations = 1         table inputs each test is simulated with: the measured
 //                                  channel, then the channel plus fresh noise at its own level
@@ -27,6 +28,7 @@ struct DiagnosisSettings {
   std::vector<std::string> heldout;
   int starts = 8;
   int evaluations = 60;
+  int exploration = 192;
   std::uint64_t seed = 1;
   int input_realisations = 1;
 };

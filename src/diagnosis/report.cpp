@@ -104,7 +104,7 @@ void write_histories(const std::filesystem::path& file, const MeasuredSet& set, 
 
 // The [diagnosis] settings the numbers came from, so that a run can be repeated.
 nlohmann::json settings_json(const DiagnosisSettings& s) {
-  return {{"starts", s.starts}, {"evaluations", s.evaluations}, {"seed", s.seed},
+  return {{"starts", s.starts}, {"evaluations", s.evaluations}, {"exploration", s.exploration}, {"seed", s.seed},
           {"input_realisations", s.input_realisations}};
 }
 

@@ -107,5 +107,13 @@ TEST_F(MeasuredSetDirectory, InputRealisationsOutOfRangeAreNamed) {
                                 HasSubstr("expected 1 to 64")));
 }
 
+TEST_F(MeasuredSetDirectory, ExplorationOutOfRangeIsNamed) {
+  write("specimen.toml", kSpecimen + "[diagnosis]\nexploration = 8\n");
+  write("run_a.csv", test_csv());
+  write("run_b.csv", test_csv());
+  EXPECT_THAT(error_of(), AllOf(HasSubstr("specimen.toml"), HasSubstr("diagnosis.exploration"),
+                                HasSubstr("expected 16 to 100000")));
+}
+
 }  // namespace
 }  // namespace caskdem::diagnosis
