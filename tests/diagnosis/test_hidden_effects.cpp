@@ -54,6 +54,22 @@
 // another branch (residual sliding off by 11 tolerances). A start that carries the baseline's
 // soft contact into the layer (stiffness scale 1, layer ratio 0.27, deepest layer) is no
 // continuation: the stiffness scale also scales the shear springs, and that start's J is 1470.
+// What pins the layer on seed 106 is its own stiffness, stiffness scale times layer ratio: at the
+// nominal baseline values (friction 0.35, damping 0.03, stiffness scale 1) J over layer ratio and
+// depth has a trench narrower than 8 % at ratio 0.108 (the truth's product is 0.107), made by
+// test3 alone (J 178, 92, 130 and test3's loss 107, 13, 39 at ratios 0.104, 0.108, 0.112, depth
+// 0.49 mm); at the truth, moving
+// the stiffness scale with the product held keeps J below 60 over +-10 %. A local search
+// (Nelder-Mead, unit coordinates) from the trench's bottom stops at J 80, about 0.05 unit from
+// the truth in four parameters, though J falls almost steadily along the straight line between
+// them (one rise of 7). The sine tests alone (test1, 4, 7, 8; the earthquakes test3 and test6
+// are the tests whose tolerances predictability widens most, by 2.8 and 5.2 in geometric mean
+// against 1.0 to 1.4) give a landscape that funnels to the truth from far: a search on them from
+// ratio 0.12, depth 0.36 mm at the nominal baseline, then on all six training tests, ends at J
+// 5.7 in the truth's basin. Run as a first stage of every fit (its end one more start of the
+// full fit), that fit on the sines ends in the no-sliding soft-contact basin too (J 28 on the
+// four sines against 3.4 at the truth), and seed 106 stays "none"; so does exploring with 1024
+// points instead of 192 (specimen.toml's exploration; the floor fit ends at J 48, friction 1.32).
 // Each objective above can be checked with `caskdem evaluate-measured` on the data set that
 // `caskdem synthesize-measured --effect NAME --seed N` writes, at the values in its truth.json.
 
