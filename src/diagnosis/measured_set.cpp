@@ -1,10 +1,26 @@
 #include "diagnosis/measured_set.h"
 
 #include <algorithm>
+#include <string>
+#include <string_view>
 
 #include "core/error.h"
 
 namespace caskdem::diagnosis {
+
+namespace {
+
+// An optional whole number of the [diagnosis] table within [low, high] (`what` names its unit);
+// `fallback` when the key is absent.
+int whole_number_in(TableReader& t, std::string_view key, int fallback, int low, int high, const std::string& what) {
+  const long value = t.optional_integer(key).value_or(fallback);
+  if (value < low || value > high) {
+    t.fail(key, "expected " + std::to_string(low) + " to " + std::to_string(high) + " " + what);
+  }
+  return static_cast<int>(value);
+}
+
+}  // namespace
 
 Case read_specimen(const std::filesystem::path& specimen, DiagnosisSettings* settings) {
   const toml::table document = parse_toml_file(specimen);
@@ -32,21 +48,15 @@ Case read_specimen(const std::filesystem::path& specimen, DiagnosisSettings* set
         s.heldout.push_back(*name);
       }
     }
-    const long starts = t.optional_integer("starts").value_or(8);
-    if (starts < 1 || starts > 64) t.fail("starts", "expected 1 to 64 searches");
-    const long evaluations = t.optional_integer("evaluations").value_or(60);
-    if (evaluations < 10 || evaluations > 5000) t.fail("evaluations", "expected 10 to 5000 evaluations");
-    const long exploration = t.optional_integer("exploration").value_or(192);
-    if (exploration < 16 || exploration > 100000) t.fail("exploration", "expected 16 to 100000 points");
-    const long seed = t.optional_integer("seed").value_or(1);
+    const DiagnosisSettings defaults;
+    s.starts = whole_number_in(t, "starts", defaults.starts, 1, 64, "searches");
+    s.evaluations = whole_number_in(t, "evaluations", defaults.evaluations, 10, 5000, "evaluations");
+    s.exploration = whole_number_in(t, "exploration", defaults.exploration, 16, 100000, "points");
+    const long seed = t.optional_integer("seed").value_or(static_cast<long>(defaults.seed));
     if (seed < 0) t.fail("seed", "expected a non-negative whole number");
-    s.starts = static_cast<int>(starts);
-    s.evaluations = static_cast<int>(evaluations);
-    s.exploration = static_cast<int>(exploration);
     s.seed = static_cast<std::uint64_t>(seed);
-    const long input_realisations = t.optional_integer("input_realisations").value_or(1);
-    if (input_realisations < 1 || input_realisations > 64) t.fail("input_realisations", "expected 1 to 64 table inputs per test");
-    s.input_realisations = static_cast<int>(input_realisations);
+    s.input_realisations =
+        whole_number_in(t, "input_realisations", defaults.input_realisations, 1, 64, "table inputs per test");
     t.reject_unknown_keys();
   }
   root.reject_unknown_keys();

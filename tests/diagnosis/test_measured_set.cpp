@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <ostream>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -99,21 +100,35 @@ TEST_F(MeasuredSetDirectory, EveryTestHeldOutLeavesNothingToFit) {
   EXPECT_THAT(error_of(), AllOf(HasSubstr("specimen.toml"), HasSubstr("training"), HasSubstr("got 0 and 2")));
 }
 
-TEST_F(MeasuredSetDirectory, InputRealisationsOutOfRangeAreNamed) {
-  write("specimen.toml", kSpecimen + "[diagnosis]\ninput_realisations = 0\n");
+// A [diagnosis] setting outside its range: the line, the key it names, what was expected.
+struct OutOfRangeSetting {
+  const char* line;
+  const char* key;
+  const char* expected;
+};
+
+// How ctest and gtest name a case (else they print its bytes).
+void PrintTo(const OutOfRangeSetting& c, std::ostream* os) { *os << c.line; }
+
+class DiagnosisSettingOutOfRange : public MeasuredSetDirectory,
+                                   public ::testing::WithParamInterface<OutOfRangeSetting> {};
+
+TEST_P(DiagnosisSettingOutOfRange, IsNamedWithItsRange) {
+  const OutOfRangeSetting c = GetParam();
+  write("specimen.toml", kSpecimen + "[diagnosis]\n" + c.line + "\n");
   write("run_a.csv", test_csv());
   write("run_b.csv", test_csv());
-  EXPECT_THAT(error_of(), AllOf(HasSubstr("specimen.toml"), HasSubstr("diagnosis.input_realisations"),
-                                HasSubstr("expected 1 to 64")));
+  EXPECT_THAT(error_of(), AllOf(HasSubstr("specimen.toml"), HasSubstr(c.key), HasSubstr(c.expected)));
 }
 
-TEST_F(MeasuredSetDirectory, ExplorationOutOfRangeIsNamed) {
-  write("specimen.toml", kSpecimen + "[diagnosis]\nexploration = 8\n");
-  write("run_a.csv", test_csv());
-  write("run_b.csv", test_csv());
-  EXPECT_THAT(error_of(), AllOf(HasSubstr("specimen.toml"), HasSubstr("diagnosis.exploration"),
-                                HasSubstr("expected 16 to 100000")));
-}
+INSTANTIATE_TEST_SUITE_P(
+    Settings, DiagnosisSettingOutOfRange,
+    ::testing::Values(OutOfRangeSetting{"input_realisations = 0", "diagnosis.input_realisations", "expected 1 to 64"},
+                      OutOfRangeSetting{"exploration = 8", "diagnosis.exploration", "expected 16 to 100000"}),
+    [](const ::testing::TestParamInfo<OutOfRangeSetting>& info) {
+      const std::string line = info.param.line;
+      return line.substr(0, line.find(' '));
+    });
 
 }  // namespace
 }  // namespace caskdem::diagnosis
