@@ -173,7 +173,31 @@ void curvature_errors(const std::vector<Parameter>& space, FitResult& result, co
 }
 
 
-// One round: explore (one population), then local searches from the best points explored.
+// The explored points (indices, in `order`: the first point, then best first) that start the
+// searches: the first point; each point with no better explored point within `radius`; then
+// the best points not yet chosen.
+std::vector<int> basin_starts(const std::vector<std::vector<double>>& explored, const std::vector<int>& order,
+                              double radius, int searches) {
+  const auto wanted = static_cast<std::size_t>(std::min<std::size_t>(searches, order.size()));
+  std::vector<int> chosen = {order[0]};
+  auto near = [&](int a, int b) {
+    double squared = 0.0;
+    for (std::size_t i = 0; i < explored[a].size(); ++i) squared += (explored[a][i] - explored[b][i]) * (explored[a][i] - explored[b][i]);
+    return squared < radius * radius;
+  };
+  for (std::size_t k = 1; k < order.size() && chosen.size() < wanted; ++k) {
+    bool best_near = true;
+    for (std::size_t b = 0; b < k && best_near; ++b) best_near = !near(order[k], order[b]);
+    if (best_near) chosen.push_back(order[k]);
+  }
+  for (std::size_t k = 1; k < order.size() && chosen.size() < wanted; ++k) {
+    if (std::find(chosen.begin(), chosen.end(), order[k]) == chosen.end()) chosen.push_back(order[k]);
+  }
+  return chosen;
+}
+
+// One round: explore (one population), then local searches from the explored points that
+// basin_starts picks.
 SearchResult explore_and_search(const std::vector<Parameter>& space, const std::vector<std::vector<double>>& explored,
                                 const PopulationObjective& objective, const FitOptions& options, int searches,
                                 FitResult& result) {
@@ -190,13 +214,15 @@ SearchResult explore_and_search(const std::vector<Parameter>& space, const std::
     result.evaluations += static_cast<int>(points.size());
     ++result.populations;
   }
-  // The searches start from the best points explored, the first point always among them (a
-  // nested model's search then cannot end worse than the model it extends).
+  // The first point always starts a search (a nested model's search then cannot end worse than
+  // the model it extends); then, best first, each point with no better one within the basin
+  // radius; then the best points left.
   std::vector<int> order(explored.size());
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin() + 1, order.end(), [&](int a, int b) { return explored_values[a] < explored_values[b]; });
+  const std::vector<int> chosen = basin_starts(explored, order, options.basin_radius, searches);
   std::vector<std::vector<double>> starts;
-  for (int s = 0; s < searches && s < static_cast<int>(order.size()); ++s) starts.push_back(explored[order[s]]);
+  for (int c : chosen) starts.push_back(explored[c]);
 
   Lockstep lockstep(static_cast<int>(starts.size()), space, objective);
   std::vector<SearchResult> ends(starts.size());
@@ -220,7 +246,7 @@ SearchResult explore_and_search(const std::vector<Parameter>& space, const std::
         };
         search.set_min_objective(Bridge::call, &context);
         std::vector<double> u = starts[s];
-        double value = explored_values[order[s]];
+        double value = explored_values[chosen[s]];
         try {
           search.optimize(u, value);
         } catch (const nlopt::roundoff_limited&) {
@@ -301,7 +327,7 @@ FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<
   result.best.resize(n);
   for (int i = 0; i < n; ++i) result.best[i] = from_unit(space[i], best.unit[i]);
   result.objective = best.value;
-  curvature_errors(space, result, objective, residual_count);
+  if (options.standard_errors) curvature_errors(space, result, objective, residual_count);
   return result;
 }
 

@@ -5,8 +5,11 @@
 // a Latin hypercube of the whole box, and a Latin hypercube near the references (their
 // baseline parameters moved a little, a mechanism's parameters over their whole range:
 // a mechanism that matters changes the best baseline parameters only a little, and the
-// region where it fits can be too small for a global sample of a 5-D box to hit). The best
-// points explored start several local searches (NLopt's BOBYQA,
+// region where it fits can be too small for a global sample of a 5-D box to hit). Each local
+// search starts from the best explored point that has no better one within basin_radius (unit
+// coordinates), so that the starts spread over the basins the sample found instead of crowding
+// into the broadest (multi-level single linkage, Rinnooy Kan & Timmer 1987); the best points
+// left fill the remaining starts. The local searches (NLopt's BOBYQA,
 // Powell 2009, bounded, derivative-free), which run side by side, each in its own thread:
 // whenever all of them are waiting for an objective value, their points are evaluated together
 // as lanes of one lockstep simulation (the ensemble kernel), so a population costs one run.
@@ -39,11 +42,13 @@ struct FitOptions {
   int exploration = 192;      // points of the first population (the references, then half global, half local)
   double local_spread = 0.05; // of the unit box: how far local exploration moves a reference's baseline parameters
   int starts = 8;             // parallel local searches, from the best points explored
+  double basin_radius = 0.5;  // of the unit box: a start has no better explored point this near (0: the best points)
   int evaluations = 60;       // per search
   int refinement = 96;        // points of a second exploration around the best end point (0: none)
   double initial_step = 0.1;  // of the unit box, the searches' first steps
   nlopt::algorithm method = nlopt::LN_BOBYQA;
   std::uint64_t seed = 1;     // Latin hypercube
+  bool standard_errors = true; // the curvature population (off for a fit that only finds a start)
 };
 
 struct FitResult {

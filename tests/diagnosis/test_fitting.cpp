@@ -1,6 +1,7 @@
 // The lockstep fitter on objectives with known answers: it finds the minimum of a quadratic
-// bowl, evaluates its searches as populations (several points per call), and its standard
-// errors equal the bowl's widths, on linear and logarithmic parameters alike.
+// bowl, evaluates its searches as populations (several points per call), its standard errors
+// equal the bowl's widths, on linear and logarithmic parameters alike, and its starts reach a
+// narrow well beside a broad bowl.
 
 #include <cmath>
 #include <mutex>
@@ -73,6 +74,39 @@ TEST(Fitting, SameResultEveryTime) {
     EXPECT_EQ(again.best, first.best);
     EXPECT_EQ(again.evaluations, first.evaluations);
   }
+}
+
+TEST(Fitting, StartsSpreadOverTheBasinsExplored) {
+  // A broad bowl around a = (-1, -1) beside a narrower, deeper well at b = (1.2, 1.2):
+  // J = 0.5 |x - a|^2 - 6 exp(-|x - b|^2 / (2 0.6^2)), whose minimum is in the well, at
+  // x = y = 1.0698 (J = -1.4399, where the bowl's pull balances the well's; against J(a) = 0).
+  // The sample's best points all lie in the bowl, so two searches started from the best points
+  // both end there; with one start per basin (no better point within half the box) the second
+  // starts from the well's best sampled point and finds the minimum.
+  const std::vector<Parameter> space = {{"a", "", -2.0, 2.0, false, -1.5}, {"b", "", -2.0, 2.0, false, -1.5}};
+  const PopulationObjective bowl_and_well = [](const std::vector<std::vector<double>>& population) {
+    std::vector<double> values;
+    for (const auto& x : population) {
+      const double to_a = (x[0] + 1.0) * (x[0] + 1.0) + (x[1] + 1.0) * (x[1] + 1.0);
+      const double to_b = (x[0] - 1.2) * (x[0] - 1.2) + (x[1] - 1.2) * (x[1] - 1.2);
+      values.push_back(0.5 * to_a - 6.0 * std::exp(-to_b / (2.0 * 0.6 * 0.6)));
+    }
+    return values;
+  };
+  FitOptions options;
+  options.starts = 2;
+  options.exploration = 64;
+  options.evaluations = 60;
+  options.standard_errors = false;
+  options.basin_radius = 0.0;
+  const FitResult crowded = fit_parameters(space, {{-1.5, -1.5}}, bowl_and_well, options, 10);
+  EXPECT_NEAR(crowded.best[0], -1.0, 1e-2);  // in the bowl: without the rule the test fails
+  options.basin_radius = 0.5;
+  const FitResult spread = fit_parameters(space, {{-1.5, -1.5}}, bowl_and_well, options, 10);
+  EXPECT_NEAR(spread.best[0], 1.0698, 2e-3);
+  EXPECT_NEAR(spread.best[1], 1.0698, 2e-3);
+  EXPECT_NEAR(spread.objective, -1.4399, 1e-4);
+  EXPECT_TRUE(spread.standard_error.empty());  // none asked for
 }
 
 TEST(Fitting, UnitCoordinatesRoundTrip) {
