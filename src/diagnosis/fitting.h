@@ -41,7 +41,7 @@ using PopulationObjective = std::function<std::vector<double>(const std::vector<
 struct FitOptions {
   int exploration = 192;      // points of the first population (the references, then half global, half local)
   double local_spread = 0.05; // of the unit box: how far local exploration moves a reference's baseline parameters
-  int starts = 8;             // parallel local searches, from the best points explored
+  int starts = 8;             // parallel local searches, from the explored basins (basin_radius)
   double basin_radius = 0.5;  // of the unit box: a start has no better explored point this near (0: the best points)
   int evaluations = 60;       // per search
   int refinement = 96;        // points of a second exploration around the best end point (0: none)

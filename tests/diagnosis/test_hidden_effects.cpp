@@ -7,71 +7,38 @@
 // from test to test; success rates over more seeds are measured outside CI
 // (bench/diagnosis_success.sh, README "Measured data").
 //
-// Two mechanisms are not found reliably yet, and their tests are disabled (ctest lists them
-// as not run) rather than weakened: with velocity_dependent_friction hidden (seed 101) the
-// extended fit lowers the training BIC by 63 but gains only 0.03 on the held-out tests: its
-// kinetic ratio and decay speed settle in a basin other than the truth's, whose training
-// objective is lower (28.6 against 35.5); with floor_compliance hidden (seed 106) the
-// baseline mimics the soft layer with a soft, heavily damped contact (stiffness scale 0.27,
-// damping ratio 0.25) and no search reaches the true basin (training objective 17 against
-// the fit's 63). Both are search problems in an objective whose basins are a few percent
-// wide in every parameter, not missing physics: at the truth of seed 101, static friction
-// 0.2 % higher (kinetic friction unchanged) raises test4's loss from 1.3 to 114, the net drift
-// of a cask sliding both ways under a 0.5 g sine; at the truth of seed 106, a contact 0.9 %
-// and 1.8 % stiffer raises the residual-sliding loss of the rocking earthquake test3 from 0
-// to 6 and 20. On the straight line (unit coordinates) from seed 101's fit to its truth, the
-// sine tests' losses fall steadily towards the truth (held-out 35 -> 0.6); the steps are in
-// the two earthquake tests, whose rocking duration and rate count threshold crossings (test6
-// goes from 1 to 44 between neighbouring points), and in test4's drift (a ridge near 30 that
-// falls to 1.3 only in the last 5 % of the way). Making those two measures continuous
-// smooths the line but did not find the mechanism on seed 101; fitting first on the smooth
-// tests alone did not either.
-// Over the success-rate seeds (README, "How often it is right") seed 101 is the rarer kind of
-// friction miss: in seven of ten misses there the fit's training objective is below the
-// truth's, because one training test at the true values is on a knife edge under the table
-// channel's noise (seed 1003 made without table noise: that test's loss at the truth 1.7
-// instead of 47.5); the floor-layer misses are mostly search failures, as on seed 106.
-// More searches do not cure either: with starts = 16 instead of 6 in specimen.toml, seed 101's
-// friction fit goes below the truth's training objective (19.0) and loses on the held-out
-// tests (gain -1.19: test2's maximum and residual sliding off by 5 tolerances, at kinetic
-// ratio 0.72 and decay speed 0.017 m/s against the true 0.59 and 0.041), and on seed 106 no
-// floor-layer fit improves on the baseline at all (cause "none"). Other held-out pairs
-// (specimen.toml's heldout) than the generator's test2 and test5: on seed 101, test4 and
-// test8 held out name the friction (gain 0.42, BIC delta -135), test3 and test7 or test1 and
-// test6 give "none"; on seed 106 all three give "none". Seed 101's answer hangs on which
-// two tests are held out, and on whether the knife-edge test4 is among those fitted.
-// Two remedies that do not hang on one split or on one input, measured on both seeds: the
-// held-out error pooled over the four two-test folds above (each fold's fits on the other six
-// tests) gives the friction a gain of 0.19 on seed 101, short of 0.2, and the floor layer -0.22
-// on seed 106 (three of the four folds); judging each test by the likelihood averaged over
-// four table inputs (specimen.toml's input_realisations = 4, measures.h marginal_loss), seed
-// 101's friction fit again goes below the truth's objective (28.0 against 33.6) and loses on
-// the held-out tests (gain -6.4), and seed 106 gives "none".
-// Seed 106's basin, measured around the truth (training J 17.3 there; the baseline's fit 63.4,
-// at friction 1.21, no sliding): J stays below 63 only for a soft-layer ratio within about
-// 3 % (0.09: 14.9; 0.085: 138; 0.095: 125), a stiffness scale within 2 %, a damping ratio
-// within 12 % and a layer depth within 15 %; outside it test3, the rocking earthquake, takes
-// another branch (residual sliding off by 11 tolerances). A start that carries the baseline's
-// soft contact into the layer (stiffness scale 1, layer ratio 0.27, deepest layer) is no
-// continuation: the stiffness scale also scales the shear springs, and that start's J is 1470.
-// What pins the layer on seed 106 is its own stiffness, stiffness scale times layer ratio: at the
-// nominal baseline values (friction 0.35, damping 0.03, stiffness scale 1) J over layer ratio and
-// depth has a trench narrower than 8 % at ratio 0.108 (the truth's product is 0.107), made by
-// test3 alone (J 178, 92, 130 and test3's loss 107, 13, 39 at ratios 0.104, 0.108, 0.112, depth
-// 0.49 mm); at the truth, moving
-// the stiffness scale with the product held keeps J below 60 over +-10 %. A local search
-// (Nelder-Mead, unit coordinates) from the trench's bottom stops at J 80, about 0.05 unit from
-// the truth in four parameters, though J falls almost steadily along the straight line between
-// them (one rise of 7). The sine tests alone (test1, 4, 7, 8; the earthquakes test3 and test6
-// are the tests whose tolerances predictability widens most, by 2.8 and 5.2 in geometric mean
-// against 1.0 to 1.4) give a landscape that funnels to the truth from far: a search on them from
-// ratio 0.12, depth 0.36 mm at the nominal baseline, then on all six training tests, ends at J
-// 5.7 in the truth's basin. Run as a first stage of every fit (its end one more start of the
-// full fit), that fit on the sines ends in the no-sliding soft-contact basin too (J 28 on the
-// four sines against 3.4 at the truth), and seed 106 stays "none", also when each search starts
-// from the best explored point within 0.25 unit (one start per basin sampled, as in multi-level
-// single linkage) instead of from the best points; so does exploring with 1024 points instead of
-// 192 (specimen.toml's exploration; the floor fit ends at J 48, friction 1.32).
+// Velocity-dependent friction (seed 101) is found since each fit starts one local search per
+// explored basin (fitting.h, basin_radius) and one more from a first fit on the predictable
+// training tests (diagnose.cpp): held-out gain 0.42, BIC -20.4; before, its kinetic ratio and
+// decay speed settled in a basin other than the truth's, with a lower training objective
+// (28.6 against 35.5) and a held-out gain of 0.03.
+//
+// The floor layer (seed 106) is still not found, and its test is disabled (ctest lists it as
+// not run) rather than weakened. Its fit now reaches the truth's basin, but loses on one
+// held-out test:
+// - The search. The baseline mimics the soft layer with a soft, heavily damped contact that does
+//   not slide (stiffness scale 0.27, damping ratio 0.25, friction 1.21), and the truth's basin is
+//   a few percent wide in every parameter: a contact 0.9 % stiffer raises the residual-sliding
+//   loss of the earthquake test3 from 0 to 6. The four sine tests alone (the tests whose
+//   tolerances predictability widens least, 1.0 to 1.4 in geometric mean against 2.8 and 5.2
+//   for the earthquakes) funnel to the truth from far; but started from the best explored
+//   points their fit also ended in the no-sliding basin (J 28 on the sines against 3.4 at the
+//   truth), as did exploring with 1024 points, starts = 16, and one start per basin at radius
+//   0.25. With one start per basin at radius 0.5 the fit on the sines ends at J 3.5 and the
+//   full fit at J 8.8, below the truth's 17.3 (friction 0.341, damping ratio 0.0396, stiffness
+//   scale 1.198, layer ratio 0.0877 and depth 0.355 mm against 0.309, 0.0422, 1.161, 0.0918 and
+//   0.341 mm).
+// - The held-out test5. That fit predicts every rotation measure of both held-out tests within
+//   its tolerance, but test5's residual sliding is off by 7.1 tolerances: test5 slides only
+//   when friction is below about 0.32, and the training tests do not pin friction that closely
+//   (their J is 9.5, 8.5 and 8.7 at friction 0.32, 0.33 and 0.34, test5's loss 1.6, 15 and 34).
+//   That one miss makes the held-out gain -0.03 (BIC -118). A held-out error that grows only
+//   logarithmically beyond a tolerance, sqrt(mean ln(1 + r^2)), gives 0.31 and names the layer,
+//   but on the success-rate seeds it costs velocity-dependent friction more than it gains
+//   (seed 1008: 0.23 with the present error, 0.10 with the log score; over seeds 1001 to 1008
+//   the friction was named in 2 of 8 with it, 4 of 8 before either change), so it was not
+//   adopted. Four table inputs per test, other held-out pairs, and the held-out error pooled
+//   over four folds did not find it either (measured before the search changes).
 // Each objective above can be checked with `caskdem evaluate-measured` on the data set that
 // `caskdem synthesize-measured --effect NAME --seed N` writes, at the values in its truth.json.
 
@@ -134,16 +101,16 @@ std::string case_name(const ::testing::TestParamInfo<HiddenCase>& info) { return
 
 INSTANTIATE_TEST_SUITE_P(
     EveryMechanism, HiddenEffect,
-    ::testing::Values(HiddenCase{Mechanism::amplitude_dependent_restitution, 102},
+    ::testing::Values(HiddenCase{Mechanism::velocity_dependent_friction, 101},
+                      HiddenCase{Mechanism::amplitude_dependent_restitution, 102},
                       HiddenCase{Mechanism::eccentric_mass, 103}, HiddenCase{Mechanism::base_imperfection, 104},
                       HiddenCase{Mechanism::vertical_excitation, 105}, HiddenCase{Mechanism::out_of_plane_loss, 107},
                       HiddenCase{Mechanism::sensor_delay, 108}),
     case_name);
 
-// Not found reliably yet (see the top of this file); run with --gtest_also_run_disabled_tests.
+// Not found yet (see the top of this file); run with --gtest_also_run_disabled_tests.
 INSTANTIATE_TEST_SUITE_P(DISABLED_NotYetFound, HiddenEffect,
-                         ::testing::Values(HiddenCase{Mechanism::velocity_dependent_friction, 101},
-                                           HiddenCase{Mechanism::floor_compliance, 106}),
+                         ::testing::Values(HiddenCase{Mechanism::floor_compliance, 106}),
                          case_name);
 
 TEST(HiddenEffect, BaselineDataGiveNone) {
