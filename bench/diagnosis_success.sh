@@ -9,7 +9,7 @@
 # write each setting's rows to a CSV of its own.
 #
 # The seeds here start at 1001 so they are not the ones the CI tests use (101..110). About
-# 1.5 to 2 minutes per data set on 2 cores. Appends to OUT_CSV, so a stopped run resumes.
+# 1 to 5 minutes per data set on 2 cores. Appends to OUT_CSV, so a stopped run resumes.
 set -eu
 build=${1:?usage: diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS] [INPUTS]}
 out=${2:?usage: diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS] [INPUTS]}

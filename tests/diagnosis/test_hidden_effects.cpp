@@ -35,9 +35,9 @@
 //   That one miss makes the held-out gain -0.03 (BIC -118). A held-out error that grows only
 //   logarithmically beyond a tolerance, sqrt(mean ln(1 + r^2)), gives 0.31 and names the layer,
 //   but on the success-rate seeds it costs velocity-dependent friction more than it gains
-//   (seed 1008: 0.23 with the present error, 0.10 with the log score; over seeds 1001 to 1008
-//   the friction was named in 2 of 8 with it, 4 of 8 before either change), so it was not
-//   adopted. Four table inputs per test, other held-out pairs, and the held-out error pooled
+//   (seed 1008: 0.23 with the present error, 0.10 with the log score; over seeds 1001 to 1009
+//   the friction was named in 2 of 9 with it, 4 of 9 before either change; rows in
+//   bench/results/diagnosis-success-logscore-trial.csv), so it was not adopted. Four table inputs per test, other held-out pairs, and the held-out error pooled
 //   over four folds did not find it either (measured before the search changes).
 // Each objective above can be checked with `caskdem evaluate-measured` on the data set that
 // `caskdem synthesize-measured --effect NAME --seed N` writes, at the values in its truth.json.
