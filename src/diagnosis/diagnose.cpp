@@ -161,8 +161,10 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
   fit_options.evaluations = set.settings.evaluations;
   fit_options.exploration = set.settings.exploration;
   fit_options.seed = set.settings.seed;
-  const std::vector<double> nominal = variant.reference();
-  if (std::find(starts.begin(), starts.end(), nominal) == starts.end()) starts.push_back(nominal);
+  auto add_start = [&starts](const std::vector<double>& start) {
+    if (std::find(starts.begin(), starts.end(), start) == starts.end()) starts.push_back(start);
+  };
+  add_start(variant.reference());
   // A first fit on the predictable training tests alone, whose end is one more start: the
   // chaotic tests make the objective a field of narrow basins, while the predictable ones
   // funnel towards the truth from far (measured on a hidden floor layer; tests/diagnosis/
@@ -178,7 +180,7 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
     first_options.standard_errors = false;
     const int predictable_residuals = static_cast<int>(predictable.size() * measure_names().size());
     const FitResult first = fit_parameters(m.parameters, starts, predictable_objective, first_options, predictable_residuals);
-    if (std::find(starts.begin(), starts.end(), first.best) == starts.end()) starts.push_back(first.best);
+    add_start(first.best);
   }
   m.fit = fit_parameters(m.parameters, starts, objective, fit_options, m.training_residual_count);
 

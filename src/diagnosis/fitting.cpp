@@ -178,7 +178,7 @@ void curvature_errors(const std::vector<Parameter>& space, FitResult& result, co
 // the best points not yet chosen.
 std::vector<int> basin_starts(const std::vector<std::vector<double>>& explored, const std::vector<int>& order,
                               double radius, int searches) {
-  const auto wanted = static_cast<std::size_t>(std::min<std::size_t>(searches, order.size()));
+  const std::size_t wanted = std::min<std::size_t>(searches, order.size());
   std::vector<int> chosen = {order[0]};
   auto near = [&](int a, int b) {
     double squared = 0.0;

@@ -100,7 +100,7 @@ TEST(Fitting, StartsSpreadOverTheBasinsExplored) {
   options.standard_errors = false;
   options.basin_radius = 0.0;
   const FitResult crowded = fit_parameters(space, {{-1.5, -1.5}}, bowl_and_well, options, 10);
-  EXPECT_NEAR(crowded.best[0], -1.0, 1e-2);  // in the bowl: without the rule the test fails
+  EXPECT_NEAR(crowded.best[0], -1.0, 1e-2);  // the best points alone end in the bowl
   options.basin_radius = 0.5;
   const FitResult spread = fit_parameters(space, {{-1.5, -1.5}}, bowl_and_well, options, 10);
   EXPECT_NEAR(spread.best[0], 1.0698, 2e-3);
