@@ -8,6 +8,11 @@
 # INPUTS sets [diagnosis] input_realisations (default 1: the measured table channel alone);
 # write each setting's rows to a CSV of its own.
 #
+# Beside OUT_CSV, OUT_CSV less .csv plus -parameters.csv gets one row per fitted parameter of
+# the hidden model (the baseline for none): the true value from the generator's truth.json, the
+# fitted value and its standard error, to check the reported uncertainties against the truth
+# (bench/parameter_coverage.py).
+#
 # The seeds here start at 1001 so they are not the ones the CI tests use (101..110). About
 # 1 to 5 minutes per data set on 2 cores. Appends to OUT_CSV, so a stopped run resumes.
 set -eu
@@ -20,7 +25,9 @@ inputs=${6:-1}
 caskdem="$build/src/caskdem"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
+parameters_out="${out%.csv}-parameters.csv"
 [ -s "$out" ] || echo "hidden,seed,cause,second_cause,hidden_gain,hidden_bic_delta,hidden_significant,top,top_gain,wall_s" >"$out"
+[ -s "$parameters_out" ] || echo "hidden,seed,model,parameter,truth,fitted,standard_error,at_search_bound,training_objective,training_residuals" >"$parameters_out"
 
 i=0
 while [ "$i" -lt "$seeds" ]; do
@@ -48,6 +55,22 @@ fields = [effect, seed, d["cause"], d["second_cause"] or "",
           str(hidden["significant"]).lower() if hidden else "", top["mechanism"], "%.4f" % top["heldout_gain"],
           "%.1f" % d["wall_time_s"]]
 print(",".join(fields))
+PY
+    /usr/bin/python3 - "$dir/diagnosis/diagnosis.json" "$dir/truth.json" "$effect" "$seed" >>"$parameters_out" <<'PY'
+import json, sys
+d, truth = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))["parameters"]
+effect, seed = sys.argv[3], sys.argv[4]
+fit = d["baseline"] if effect == "none" else next(r["fit"] for r in d["ranking"] if r["mechanism"] == effect)
+residuals = len(d["tests"]["training"]) * len(d["measures"])
+# No standard error: the fit did not beat the model it extends (the mechanism switched off),
+# its curvature was not positive definite, or the value is on its search bound.
+for name, p in sorted(fit["parameters"].items()):
+    if name not in truth:
+        continue
+    se = p["standard_error"]
+    print(",".join([effect, seed, fit["model"], name, "%.6g" % truth[name], "%.6g" % p["value"],
+                    "" if se is None else "%.4g" % se, str(p["at_search_bound"]).lower(),
+                    "%.4f" % fit["training_objective"], str(residuals)]))
 PY
     tail -n 1 "$out"
     rm -rf "$dir"

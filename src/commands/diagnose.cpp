@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 #include "commands/commands.h"
 #include "diagnosis/report.h"
@@ -23,8 +24,11 @@ diagnosis::DiagnosisOptions options_for(int threads, bool quiet) {
 void print_fit(const diagnosis::ModelFit& m) {
   for (std::size_t i = 0; i < m.parameters.size(); ++i) {
     std::cout << "  " << std::left << std::setw(20) << m.parameters[i].name << std::setprecision(4) << m.fit.best[i];
-    if (!m.fit.standard_error.empty()) std::cout << " +- " << std::setprecision(2) << m.fit.standard_error[i];
-    std::cout << " " << m.parameters[i].units << "\n";
+    const std::optional<double> error = diagnosis::standard_error_of(m.fit, m.parameters, i);
+    if (error) std::cout << " +- " << std::setprecision(2) << *error;
+    std::cout << " " << m.parameters[i].units;
+    if (diagnosis::at_search_bound(m.parameters[i], m.fit.best[i])) std::cout << " (at the search bound)";
+    std::cout << "\n";
   }
 }
 

@@ -27,6 +27,16 @@ double from_unit(const Parameter& p, double unit) {
   return p.logarithmic ? p.low * std::pow(p.high / p.low, unit) : p.low + unit * (p.high - p.low);
 }
 
+bool at_search_bound(const Parameter& p, double value) {
+  const double u = to_unit(p, value);
+  return u <= 1e-6 || u >= 1.0 - 1e-6;
+}
+
+std::optional<double> standard_error_of(const FitResult& fit, const std::vector<Parameter>& space, std::size_t i) {
+  if (fit.standard_error.empty() || at_search_bound(space[i], fit.best[i])) return std::nullopt;
+  return fit.standard_error[i];
+}
+
 namespace {
 
 // Gathers the points the searches ask for until every running search waits, then evaluates
@@ -162,7 +172,8 @@ void curvature_errors(const std::vector<Parameter>& space, FitResult& result, co
                               "tests do not determine, or a rugged objective): no standard errors";
     return;
   }
-  const double variance = value[0] / std::max(1, residual_count - n);
+  // The residual variance at the optimum (the stencil's centre moves inside the box near a bound).
+  const double variance = result.objective / std::max(1, residual_count - n);
   const Eigen::MatrixXd covariance = 2.0 * variance * hessian.inverse();
   for (int i = 0; i < n; ++i) {
     const Parameter& p = space[i];

@@ -26,6 +26,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,5 +67,13 @@ FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<
 
 double to_unit(const Parameter& p, double value);
 double from_unit(const Parameter& p, double unit);
+
+// Whether a fitted value ended on an edge of its search box: the tests pull it further than the
+// box allows, so the curvature there says nothing about its uncertainty.
+bool at_search_bound(const Parameter& p, double value);
+
+// Parameter i's standard error, where the fit has one: none when the curvature was not positive
+// definite or the value ended on a search bound.
+std::optional<double> standard_error_of(const FitResult& fit, const std::vector<Parameter>& space, std::size_t i);
 
 }  // namespace caskdem::diagnosis

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
@@ -18,11 +19,15 @@ namespace {
 nlohmann::json parameters_json(const ModelFit& m) {
   nlohmann::json j = nlohmann::json::object();
   for (std::size_t i = 0; i < m.parameters.size(); ++i) {
+    const Parameter& parameter = m.parameters[i];
     nlohmann::json p;
     p["value"] = m.fit.best[i];
-    if (!m.fit.standard_error.empty()) p["standard_error"] = m.fit.standard_error[i];
+    const std::optional<double> error = standard_error_of(m.fit, m.parameters, i);
+    if (error) p["standard_error"] = *error;
     else p["standard_error"] = nullptr;
-    p["units"] = m.parameters[i].units;
+    p["units"] = parameter.units;
+    p["search_range"] = {parameter.low, parameter.high};
+    p["at_search_bound"] = at_search_bound(parameter, m.fit.best[i]);
     j[m.parameters[i].name] = p;
   }
   return j;
@@ -63,6 +68,13 @@ std::string number(double v, int precision = 3) {
   std::ostringstream out;
   out << std::setprecision(precision) << v;
   return out.str();
+}
+
+// "+- SE", or why there is none.
+std::string uncertainty_text(const ModelFit& m, std::size_t i) {
+  if (at_search_bound(m.parameters[i], m.fit.best[i])) return "at the search bound";
+  const std::optional<double> error = standard_error_of(m.fit, m.parameters, i);
+  return error ? "+- " + number(*error, 2) : "-";
 }
 
 const CandidateScore* find(const std::vector<CandidateScore>& list, const std::string& name) {
@@ -194,8 +206,7 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   md << "\n## Calibrated baseline\n\n| parameter | value | standard error |\n|---|---|---|\n";
   for (std::size_t i = 0; i < d.baseline.parameters.size(); ++i) {
     md << "| " << d.baseline.parameters[i].name << " | " << number(d.baseline.fit.best[i], 4) << " "
-       << d.baseline.parameters[i].units << " | "
-       << (d.baseline.fit.standard_error.empty() ? std::string("-") : number(d.baseline.fit.standard_error[i], 2)) << " |\n";
+       << d.baseline.parameters[i].units << " | " << uncertainty_text(d.baseline, i) << " |\n";
   }
   md << "\n## Where the baseline disagrees (residual structure)\n\n"
      << "| residual | against | statistic | suggests |\n|---|---|---|---|\n";
@@ -210,9 +221,8 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
     md << "| " << mechanism_name(c.mechanism) << " | " << number(c.heldout_gain, 3) << " | " << number(c.bic_delta, 3)
        << " | " << c.heldout_tests_improved << "/" << set.heldout.size() << " | " << (c.significant ? "yes" : "no") << " | ";
     for (std::size_t i = 3; i < c.model.parameters.size(); ++i) {  // the mechanism's own parameters
-      md << c.model.parameters[i].name << " = " << number(c.model.fit.best[i], 3);
-      if (!c.model.fit.standard_error.empty()) md << " +- " << number(c.model.fit.standard_error[i], 2);
-      md << " " << c.model.parameters[i].units << "; ";
+      md << c.model.parameters[i].name << " = " << number(c.model.fit.best[i], 3) << " "
+         << c.model.parameters[i].units << " (" << uncertainty_text(c.model, i) << "); ";
     }
     md << "|\n";
   }

@@ -109,6 +109,32 @@ TEST(Fitting, StartsSpreadOverTheBasinsExplored) {
   EXPECT_TRUE(spread.standard_error.empty());  // none asked for
 }
 
+TEST(Fitting, NoStandardErrorForAValueOnItsSearchBound) {
+  // The bowl's minimum in a lies beyond the box (a = 3 against a high of 2): the fit stops on the
+  // bound, where the curvature says nothing of a's uncertainty; b's width is still 0.25.
+  const std::vector<Parameter> space = {{"a", "", 0.0, 2.0, false, 1.0}, {"b", "", -2.0, 2.0, false, 0.0}};
+  const int residuals = 12;
+  const PopulationObjective beyond = [&](const std::vector<std::vector<double>>& population) {
+    std::vector<double> values;
+    for (const auto& x : population) {
+      const double a = (x[0] - 3.0) / 0.5, b = (x[1] - 0.5) / 0.25;
+      values.push_back(residuals - 2 + a * a + b * b);
+    }
+    return values;
+  };
+  FitOptions options;
+  options.starts = 2;
+  options.evaluations = 80;
+  const FitResult fit = fit_parameters(space, {{1.0, 0.0}}, beyond, options, residuals);
+  EXPECT_DOUBLE_EQ(fit.best[0], 2.0);
+  EXPECT_TRUE(at_search_bound(space[0], fit.best[0]));
+  EXPECT_FALSE(at_search_bound(space[1], fit.best[1]));
+  EXPECT_FALSE(standard_error_of(fit, space, 0).has_value());
+  ASSERT_TRUE(standard_error_of(fit, space, 1).has_value());
+  // J* = residuals - 2 + 4 on the bound, so the variance J*/(N - k) is 1.4 and SE = 0.25 sqrt(1.4).
+  EXPECT_NEAR(*standard_error_of(fit, space, 1), 0.25 * std::sqrt(1.4), 1e-3);
+}
+
 TEST(Fitting, UnitCoordinatesRoundTrip) {
   const Parameter linear{"x", "", -3.0, 5.0, false, 0.0}, logarithmic{"y", "", 1e-3, 10.0, true, 1.0};
   for (double v : {-3.0, -1.0, 0.0, 4.9}) EXPECT_NEAR(from_unit(linear, to_unit(linear, v)), v, 1e-12);
