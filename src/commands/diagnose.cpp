@@ -14,14 +14,21 @@ namespace caskdem::commands {
 
 namespace {
 
-diagnosis::DiagnosisOptions options_for(int threads, bool quiet) {
+diagnosis::DiagnosisOptions options_for(int threads, bool quiet, const std::string& uncertainty) {
   diagnosis::DiagnosisOptions o;
   o.threads = threads;
+  o.jackknife = uncertainty == "jackknife";
   if (!quiet) o.log = [](const std::string& line) { std::cerr << "diagnose: " << line << "\n"; };
   return o;
 }
 
+// How the standard errors were made (README, "Are the uncertainties right?").
+constexpr const char* kUncertaintyHelp =
+    "Standard errors from 'jackknife' (refit without each training test: one fit per test) or 'curvature' "
+    "(of the objective at the optimum: free, but an order of magnitude too small on rocking tests)";
+
 void print_fit(const diagnosis::ModelFit& m) {
+  if (!m.fit.uncertainty_method.empty()) std::cout << "  standard errors from the " << m.fit.uncertainty_method << "\n";
   for (std::size_t i = 0; i < m.parameters.size(); ++i) {
     std::cout << "  " << std::left << std::setw(20) << m.parameters[i].name << std::setprecision(4) << m.fit.best[i];
     const std::optional<double> error = diagnosis::standard_error_of(m.fit, m.parameters, i);
@@ -40,6 +47,7 @@ void add_diagnose(CLI::App& app) {
       std::string directory, out;
       int threads = 0;
       bool quiet = false;
+      std::string uncertainty = "jackknife";
     };
     auto options = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand("calibrate-measured",
@@ -48,9 +56,13 @@ void add_diagnose(CLI::App& app) {
     cmd->add_option("--out", options->out, "Output directory (default DIRECTORY/calibration)");
     cmd->add_option("--threads", options->threads, "OpenMP threads")->check(CLI::NonNegativeNumber);
     cmd->add_flag("--quiet", options->quiet, "No progress lines");
+    cmd->add_option("--uncertainty", options->uncertainty, kUncertaintyHelp)
+        ->check(CLI::IsMember({"jackknife", "curvature"}))
+        ->capture_default_str();
     cmd->callback([options]() {
       const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
-      const diagnosis::ModelFit fit = diagnosis::calibrate_baseline(set, options_for(options->threads, options->quiet));
+      const diagnosis::ModelFit fit =
+          diagnosis::calibrate_baseline(set, options_for(options->threads, options->quiet, options->uncertainty));
       std::cout << "baseline fitted on " << set.training.size() << " tests (" << fit.fit.evaluations
                 << " evaluations in " << fit.fit.populations << " lockstep populations)\n";
       print_fit(fit);
@@ -66,6 +78,7 @@ void add_diagnose(CLI::App& app) {
       std::string directory, out;
       int threads = 0;
       bool quiet = false, no_plot = false;
+      std::string uncertainty = "curvature";
     };
     auto options = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand(
@@ -75,12 +88,17 @@ void add_diagnose(CLI::App& app) {
     cmd->add_option("--threads", options->threads, "OpenMP threads")->check(CLI::NonNegativeNumber);
     cmd->add_flag("--quiet", options->quiet, "No progress lines");
     cmd->add_flag("--no-plot", options->no_plot, "Do not make the PNGs");
+    cmd->add_option("--uncertainty", options->uncertainty,
+                    std::string(kUncertaintyHelp) + ", for the baseline and the cause")
+        ->check(CLI::IsMember({"jackknife", "curvature"}))
+        ->capture_default_str();
     cmd->callback([options]() {
       const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
       for (const diagnosis::MeasuredTest& t : set.tests) {
         for (const std::string& issue : t.issues) std::cout << "data            " << issue << "\n";
       }
-      const diagnosis::Diagnosis d = diagnosis::diagnose(set, options_for(options->threads, options->quiet));
+      const diagnosis::Diagnosis d =
+          diagnosis::diagnose(set, options_for(options->threads, options->quiet, options->uncertainty));
       std::cout << "cause           " << d.cause << "\n";
       if (!d.second_cause.empty()) std::cout << "second effect   " << d.second_cause << "\n";
       std::cout << std::left << std::setw(34) << "mechanism" << std::setw(15) << "held-out gain" << std::setw(12)

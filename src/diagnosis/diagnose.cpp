@@ -144,6 +144,16 @@ double aic_of(double j, double n, std::size_t k) {
   return n * std::log(std::max(j, 1e-300) / n) + 2.0 * static_cast<double>(k);
 }
 
+// The search effort the data set's [diagnosis] table asks for.
+FitOptions fit_options_of(const MeasuredSet& set) {
+  FitOptions o;
+  o.starts = set.settings.starts;
+  o.evaluations = set.settings.evaluations;
+  o.exploration = set.settings.exploration;
+  o.seed = set.settings.seed;
+  return o;
+}
+
 // Fits a model; its searches start from `starts` (the model it extends, mechanism off) and from
 // the specimen's nominal values (mechanism off).
 ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant,
@@ -156,11 +166,7 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
   const PopulationObjective objective = [&](const std::vector<std::vector<double>>& points) {
     return objective_over(set, yardstick, variant, set.training, points, options);
   };
-  FitOptions fit_options;
-  fit_options.starts = set.settings.starts;
-  fit_options.evaluations = set.settings.evaluations;
-  fit_options.exploration = set.settings.exploration;
-  fit_options.seed = set.settings.seed;
+  const FitOptions fit_options = fit_options_of(set);
   auto add_start = [&starts](const std::vector<double>& start) {
     if (std::find(starts.begin(), starts.end(), start) == starts.end()) starts.push_back(start);
   };
@@ -191,6 +197,28 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
   m.aic = aic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
   m.heldout_error = error_of(m.loss, m.residuals, set.heldout);
   return m;
+}
+
+// J over the training tests but the `left_out`-th (an index into set.training).
+LeaveOneOutObjective leave_one_out(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant,
+                                   const DiagnosisOptions& options) {
+  return [&set, &yardstick, &variant, options](const std::vector<std::vector<double>>& points, int left_out) {
+    std::vector<int> tests;
+    for (std::size_t k = 0; k < set.training.size(); ++k) {
+      if (static_cast<int>(k) != left_out) tests.push_back(set.training[k]);
+    }
+    return objective_over(set, yardstick, variant, tests, points, options);
+  };
+}
+
+// The fit's standard errors from the jackknife over its training tests (fitting.h): the fit
+// repeated without each, from its optimum and the model's reference.
+void add_jackknife(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant, ModelFit& m,
+                   const DiagnosisOptions& options) {
+  const LeaveOneOutObjective without = leave_one_out(set, yardstick, variant, options);
+  const int residuals = static_cast<int>((set.training.size() - 1) * measure_names().size());
+  jackknife_errors(m.parameters, m.fit, {variant.reference()}, without, static_cast<int>(set.training.size()),
+                   fit_options_of(set), residuals);
 }
 
 CandidateScore score(const MeasuredSet& set, Mechanism mechanism, ModelFit model, const ModelFit& against,
@@ -372,7 +400,14 @@ ModelFit fit_baseline(const MeasuredSet& set, const Yardstick& yardstick, const 
 }  // namespace
 
 ModelFit calibrate_baseline(const MeasuredSet& set, const DiagnosisOptions& options) {
-  return fit_baseline(set, yardstick_of(set), options);
+  const Yardstick yardstick = yardstick_of(set);
+  ModelFit fit = fit_baseline(set, yardstick, options);
+  if (options.jackknife) {
+    say(options, "standard errors: refitting without each of the " + std::to_string(set.training.size()) +
+                     " training tests in turn (jackknife)");
+    add_jackknife(set, yardstick, ModelVariant(set.specimen, {}, set.vertical_measured), fit, options);
+  }
+  return fit;
 }
 
 PointEvaluation evaluate_point(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms,
@@ -395,6 +430,14 @@ PointEvaluation evaluate_point(const MeasuredSet& set, const std::vector<Mechani
   e.bic = bic_of(e.training_objective, e.training_residual_count, e.parameters.size());
   e.heldout_error = error_of(e.loss, e.residuals, set.heldout);
   return e;
+}
+
+std::vector<double> training_objective_without(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms,
+                                               const std::vector<std::vector<double>>& points, int left_out,
+                                               const DiagnosisOptions& options) {
+  const ModelVariant variant(set.specimen, mechanisms, set.vertical_measured);
+  const Yardstick yardstick = yardstick_of(set);
+  return leave_one_out(set, yardstick, variant, options)(points, left_out);
 }
 
 Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {
@@ -436,6 +479,15 @@ Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {
   std::stable_sort(d.ranking.begin(), d.ranking.end(),
                    [](const CandidateScore& a, const CandidateScore& b) { return a.heldout_gain > b.heldout_gain; });
   const auto cause = std::find_if(d.ranking.begin(), d.ranking.end(), [](const CandidateScore& c) { return c.significant; });
+  if (options.jackknife) {
+    say(options, "standard errors of the baseline" + std::string(cause != d.ranking.end() ? " and the cause" : "") +
+                     ": refitting without each training test in turn (jackknife)");
+    add_jackknife(set, yardstick, baseline_variant, d.baseline, options);
+    if (cause != d.ranking.end()) {
+      add_jackknife(set, yardstick, ModelVariant(set.specimen, {cause->mechanism}, set.vertical_measured), cause->model,
+                    options);
+    }
+  }
   if (cause != d.ranking.end()) {
     d.cause = mechanism_name(cause->mechanism);
     if (options.look_for_second_effect) {

@@ -39,6 +39,9 @@ struct DiagnosisOptions {
   double maximum_bic_delta = -10.0;
   double minimum_improved_fraction = 0.5;
   bool look_for_second_effect = true;
+  // Standard errors from refits without each training test (fitting.h) instead of the
+  // curvature: of the baseline, and of the cause if there is one. Costs a fit per training test.
+  bool jackknife = false;
   std::function<void(const std::string&)> log;  // progress lines (may be empty)
 };
 
@@ -88,6 +91,12 @@ struct Diagnosis {
 ModelFit calibrate_baseline(const MeasuredSet& set, const DiagnosisOptions& options);
 
 Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options);
+
+// J of a model at each point over the training tests but the `left_out`-th (an index into
+// set.training): what the jackknife's refits minimise (DiagnosisOptions::jackknife).
+std::vector<double> training_objective_without(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms,
+                                               const std::vector<std::vector<double>>& points, int left_out,
+                                               const DiagnosisOptions& options);
 
 // The diagnosis's own judgement of one point of a model (`caskdem evaluate-measured`): with
 // the same tolerances as diagnose(), every test's residuals and loss, the training objective J

@@ -39,6 +39,11 @@ std::optional<double> standard_error_of(const FitResult& fit, const std::vector<
 
 namespace {
 
+// d(physical)/d(unit) at a value.
+double unit_slope(const Parameter& p, double value) {
+  return std::abs(p.logarithmic ? value * std::log(p.high / p.low) : p.high - p.low);
+}
+
 // Gathers the points the searches ask for until every running search waits, then evaluates
 // them as one population. The order of a population is the order of the searches, so the
 // run is the same whatever the threads' timing.
@@ -176,11 +181,9 @@ void curvature_errors(const std::vector<Parameter>& space, FitResult& result, co
   const double variance = result.objective / std::max(1, residual_count - n);
   const Eigen::MatrixXd covariance = 2.0 * variance * hessian.inverse();
   for (int i = 0; i < n; ++i) {
-    const Parameter& p = space[i];
-    // d(physical)/d(unit) at the optimum.
-    const double slope = p.logarithmic ? result.best[i] * std::log(p.high / p.low) : p.high - p.low;
-    result.standard_error.push_back(std::abs(slope) * std::sqrt(covariance(i, i)));
+    result.standard_error.push_back(unit_slope(space[i], result.best[i]) * std::sqrt(covariance(i, i)));
   }
+  result.uncertainty_method = "curvature";
 }
 
 
@@ -340,6 +343,42 @@ FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<
   result.objective = best.value;
   if (options.standard_errors) curvature_errors(space, result, objective, residual_count);
   return result;
+}
+
+void jackknife_errors(const std::vector<Parameter>& space, FitResult& fit,
+                      const std::vector<std::vector<double>>& references, const LeaveOneOutObjective& objective,
+                      int clusters, FitOptions options, int residual_count) {
+  const std::size_t n = space.size();
+  if (clusters < 3) {
+    fit.uncertainty_note = "a jackknife needs at least three tests to leave out";
+    fit.standard_error.clear();
+    return;
+  }
+  std::vector<std::vector<double>> starts = {fit.best};
+  starts.insert(starts.end(), references.begin(), references.end());
+  options.standard_errors = false;
+  // Each refit's optimum, in unit coordinates.
+  std::vector<std::vector<double>> refits;
+  for (int t = 0; t < clusters; ++t) {
+    const PopulationObjective without = [&](const std::vector<std::vector<double>>& points) { return objective(points, t); };
+    const FitResult refit = fit_parameters(space, starts, without, options, residual_count);
+    fit.evaluations += refit.evaluations;
+    fit.populations += refit.populations;
+    std::vector<double> u(n);
+    for (std::size_t i = 0; i < n; ++i) u[i] = to_unit(space[i], refit.best[i]);
+    refits.push_back(std::move(u));
+  }
+  fit.standard_error.assign(n, 0.0);
+  for (std::size_t i = 0; i < n; ++i) {
+    double mean = 0.0;
+    for (const auto& u : refits) mean += u[i];
+    mean /= clusters;
+    double sum = 0.0;
+    for (const auto& u : refits) sum += (u[i] - mean) * (u[i] - mean);
+    fit.standard_error[i] = unit_slope(space[i], fit.best[i]) * std::sqrt((clusters - 1.0) / clusters * sum);
+  }
+  fit.uncertainty_method = "jackknife over " + std::to_string(clusters) + " tests";
+  fit.uncertainty_note.clear();
 }
 
 }  // namespace caskdem::diagnosis

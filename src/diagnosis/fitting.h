@@ -19,10 +19,17 @@
 // so that the result depends less on one draw. The searches work on unit coordinates (linear
 // or logarithmic in each parameter) and the best end point wins.
 //
-// Uncertainty: the objective J is a sum of N squared scaled residuals; near the optimum
-// J(x) ~ J* + (x - x*)' H (x - x*) / 2, and with the residual variance estimated as
-// s^2 = J* / (N - k) the covariance of the estimate is 2 s^2 H^-1 (Gauss-Newton, Bates & Watts
-// 1988). H comes from central finite differences, evaluated as one more population.
+// Uncertainty, two ways. The curvature: the objective J is a sum of N squared scaled
+// residuals; near the optimum J(x) ~ J* + (x - x*)' H (x - x*) / 2, and with the residual
+// variance estimated as s^2 = J* / (N - k) the covariance of the estimate is 2 s^2 H^-1
+// (Gauss-Newton, Bates & Watts 1988). H comes from central finite differences, evaluated as one
+// more population. It assumes independent residuals and a smooth J; on rocking tests neither
+// holds (a test's residuals move together, and a test on a knife edge pulls the fit by more
+// than its curvature says), and it understates the error by an order of magnitude (README,
+// "Are the uncertainties right?"). The jackknife over clusters (the tests): the fit repeated
+// with each cluster left out, x_(t), and var x_i = (G - 1)/G sum_t (x_(t),i - mean)^2 (Efron &
+// Stein 1981; Efron & Tibshirani 1993, ch. 11), in unit coordinates, then scaled to physical
+// units at the optimum as the curvature's are. It costs G fits.
 
 #include <cstdint>
 #include <functional>
@@ -58,6 +65,7 @@ struct FitResult {
   int evaluations = 0;             // points evaluated, all searches
   int populations = 0;             // lockstep runs
   std::vector<double> standard_error;  // physical units; empty when the curvature is not positive definite
+  std::string uncertainty_method;      // "curvature" or "jackknife over G tests"
   std::string uncertainty_note;        // why there is none, when there is none
 };
 
@@ -67,6 +75,16 @@ FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<
 
 double to_unit(const Parameter& p, double value);
 double from_unit(const Parameter& p, double unit);
+
+// J over every cluster (a test) but `left_out` (0 to G - 1), for a population of points.
+using LeaveOneOutObjective =
+    std::function<std::vector<double>(const std::vector<std::vector<double>>& points, int left_out)>;
+
+// Replaces `fit`'s standard errors by the jackknife's over `clusters` clusters: each refit with
+// `options` (no curvature), from the fit's optimum and `references`.
+void jackknife_errors(const std::vector<Parameter>& space, FitResult& fit,
+                      const std::vector<std::vector<double>>& references, const LeaveOneOutObjective& objective,
+                      int clusters, FitOptions options, int residual_count);
 
 // Whether a fitted value ended on an edge of its search box: the tests pull it further than the
 // box allows, so the curvature there says nothing about its uncertainty.

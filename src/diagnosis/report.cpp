@@ -43,6 +43,7 @@ nlohmann::json fit_json(const ModelFit& m) {
   j["heldout_error"] = m.heldout_error;
   j["evaluations"] = m.fit.evaluations;
   j["populations"] = m.fit.populations;
+  if (!m.fit.uncertainty_method.empty()) j["uncertainty_method"] = m.fit.uncertainty_method;
   if (!m.fit.uncertainty_note.empty()) j["uncertainty_note"] = m.fit.uncertainty_note;
   return j;
 }
@@ -203,7 +204,15 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
     }
   }
   if (!any_issue) md << "No imperfections found in the test files.\n";
-  md << "\n## Calibrated baseline\n\n| parameter | value | standard error |\n|---|---|---|\n";
+  md << "\n## Calibrated baseline\n\n";
+  if (!d.baseline.fit.uncertainty_method.empty()) {
+    md << "Standard errors from the " << d.baseline.fit.uncertainty_method
+       << (d.baseline.fit.uncertainty_method == "curvature"
+               ? " of the objective (local: on rocking tests an order of magnitude too small; `--uncertainty jackknife`)"
+               : " (the fit repeated without each training test)")
+       << ".\n\n";
+  }
+  md << "| parameter | value | standard error |\n|---|---|---|\n";
   for (std::size_t i = 0; i < d.baseline.parameters.size(); ++i) {
     md << "| " << d.baseline.parameters[i].name << " | " << number(d.baseline.fit.best[i], 4) << " "
        << d.baseline.parameters[i].units << " | " << uncertainty_text(d.baseline, i) << " |\n";

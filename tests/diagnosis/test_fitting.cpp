@@ -135,6 +135,51 @@ TEST(Fitting, NoStandardErrorForAValueOnItsSearchBound) {
   EXPECT_NEAR(*standard_error_of(fit, space, 1), 0.25 * std::sqrt(1.4), 1e-3);
 }
 
+TEST(Fitting, JackknifeOverClustersIsTheStandardErrorOfTheirMean) {
+  // Cluster t pulls x to m_t and ln y to ln c_t: J_t = (x - m_t)^2 + ((ln y - ln c_t) / 0.1)^2.
+  // Without cluster t the optimum is the others' mean, and the jackknife's standard error of a
+  // mean is exactly sd / sqrt(G): for x, that of m; for y, y* times that of ln c.
+  const std::vector<double> m = {1.0, 1.3, 0.8, 1.6, 1.1}, c = {2.0, 2.5, 1.8, 2.2, 3.0};
+  const int clusters = static_cast<int>(m.size());
+  const std::vector<Parameter> space = {{"x", "", 0.0, 4.0, false, 2.0}, {"y", "", 0.1, 10.0, true, 1.0}};
+  const LeaveOneOutObjective objective = [&](const std::vector<std::vector<double>>& points, int left_out) {
+    std::vector<double> values;
+    for (const auto& p : points) {
+      double j = 0.0;
+      for (int t = 0; t < clusters; ++t) {
+        if (t == left_out) continue;
+        const double b = (std::log(p[1]) - std::log(c[t])) / 0.1;
+        j += (p[0] - m[t]) * (p[0] - m[t]) + b * b;
+      }
+      values.push_back(j);
+    }
+    return values;
+  };
+  const PopulationObjective all = [&](const std::vector<std::vector<double>>& points) { return objective(points, -1); };
+  auto mean_and_sd = [](std::vector<double> v) {
+    double mean = 0.0, ss = 0.0;
+    for (double x : v) mean += x / double(v.size());
+    for (double x : v) ss += (x - mean) * (x - mean);
+    return std::pair{mean, std::sqrt(ss / double(v.size() - 1))};
+  };
+  std::vector<double> log_c;
+  for (double v : c) log_c.push_back(std::log(v));
+  const auto [mean_m, sd_m] = mean_and_sd(m);
+  const auto [mean_log_c, sd_log_c] = mean_and_sd(log_c);
+  FitOptions options;
+  options.starts = 2;
+  options.evaluations = 100;
+  FitResult fit = fit_parameters(space, {{2.0, 1.0}}, all, options, 10);
+  ASSERT_NEAR(fit.best[0], mean_m, 1e-4);
+  ASSERT_NEAR(std::log(fit.best[1]), mean_log_c, 1e-4);
+  EXPECT_EQ(fit.uncertainty_method, "curvature");
+  jackknife_errors(space, fit, {{2.0, 1.0}}, objective, clusters, options, 10);
+  ASSERT_EQ(fit.standard_error.size(), 2u);
+  EXPECT_EQ(fit.uncertainty_method, "jackknife over 5 tests");
+  EXPECT_NEAR(fit.standard_error[0], sd_m / std::sqrt(double(clusters)), 1e-3);
+  EXPECT_NEAR(fit.standard_error[1], fit.best[1] * sd_log_c / std::sqrt(double(clusters)), 1e-3);
+}
+
 TEST(Fitting, UnitCoordinatesRoundTrip) {
   const Parameter linear{"x", "", -3.0, 5.0, false, 0.0}, logarithmic{"y", "", 1e-3, 10.0, true, 1.0};
   for (double v : {-3.0, -1.0, 0.0, 4.9}) EXPECT_NEAR(from_unit(linear, to_unit(linear, v)), v, 1e-12);
