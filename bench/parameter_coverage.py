@@ -9,7 +9,8 @@ about 68 % of the fits and |z| < 2 in about 95 %, median |z| 0.67.
 
     /usr/bin/python3 bench/parameter_coverage.py ROWS.csv [ROWS.csv ...]
 
-Prints, per parameter, the fits with a standard error, the fraction within 1 and 2 standard
+Prints, per parameter (and per way of making the standard errors, where the rows have a
+method column), the fits with a standard error, the fraction within 1 and 2 standard
 errors, the median |z| and the median relative error |fitted - true| / true of those fits;
 fits without a standard error (mechanism switched off, curvature not positive definite, value
 on a search bound) are counted apart.
@@ -23,6 +24,15 @@ def main(paths):
     rows = [r for p in paths for r in csv.DictReader(open(p))]
     if not rows:
         sys.exit("parameter_coverage.py: no rows in " + ", ".join(paths))
+    # Rows of bench/calibration_coverage.sh say how their standard errors were made.
+    methods = list(dict.fromkeys(r.get("method") or "as reported" for r in rows))
+    for method in methods:
+        if len(methods) > 1:
+            print("standard errors from the %s" % method)
+        table([r for r in rows if (r.get("method") or "as reported") == method])
+
+
+def table(rows):
     by_parameter = {}
     for r in rows:
         by_parameter.setdefault(r["parameter"], []).append(r)
