@@ -349,9 +349,11 @@ void jackknife_errors(const std::vector<Parameter>& space, FitResult& fit,
                       const std::vector<std::vector<double>>& references, const LeaveOneOutObjective& objective,
                       int clusters, FitOptions options, int residual_count) {
   const std::size_t n = space.size();
+  // A flat direction (curvature not positive definite) is one the refits need not move along
+  // either, so the jackknife cannot stand in for the curvature there.
+  if (fit.standard_error.size() != n) return;
   if (clusters < 3) {
-    fit.uncertainty_note = "a jackknife needs at least three tests to leave out";
-    fit.standard_error.clear();
+    fit.uncertainty_note = "a jackknife needs at least three tests to leave out: standard errors from the curvature";
     return;
   }
   std::vector<std::vector<double>> starts = {fit.best};
@@ -368,17 +370,16 @@ void jackknife_errors(const std::vector<Parameter>& space, FitResult& fit,
     for (std::size_t i = 0; i < n; ++i) u[i] = to_unit(space[i], refit.best[i]);
     refits.push_back(std::move(u));
   }
-  fit.standard_error.assign(n, 0.0);
   for (std::size_t i = 0; i < n; ++i) {
     double mean = 0.0;
     for (const auto& u : refits) mean += u[i];
     mean /= clusters;
     double sum = 0.0;
     for (const auto& u : refits) sum += (u[i] - mean) * (u[i] - mean);
-    fit.standard_error[i] = unit_slope(space[i], fit.best[i]) * std::sqrt((clusters - 1.0) / clusters * sum);
+    const double jackknife = unit_slope(space[i], fit.best[i]) * std::sqrt((clusters - 1.0) / clusters * sum);
+    fit.standard_error[i] = std::max(fit.standard_error[i], jackknife);
   }
-  fit.uncertainty_method = "jackknife over " + std::to_string(clusters) + " tests";
-  fit.uncertainty_note.clear();
+  fit.uncertainty_method = "larger of the jackknife over " + std::to_string(clusters) + " tests and the curvature";
 }
 
 }  // namespace caskdem::diagnosis

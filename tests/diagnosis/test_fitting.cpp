@@ -1,7 +1,8 @@
 // The lockstep fitter on objectives with known answers: it finds the minimum of a quadratic
 // bowl, evaluates its searches as populations (several points per call), its standard errors
-// equal the bowl's widths, on linear and logarithmic parameters alike, and its starts reach a
-// narrow well beside a broad bowl.
+// equal the bowl's widths, on linear and logarithmic parameters alike, its starts reach a
+// narrow well beside a broad bowl, and its jackknife over clusters gives the standard error of
+// a mean exactly.
 
 #include <cmath>
 #include <mutex>
@@ -169,15 +170,26 @@ TEST(Fitting, JackknifeOverClustersIsTheStandardErrorOfTheirMean) {
   FitOptions options;
   options.starts = 2;
   options.evaluations = 100;
-  FitResult fit = fit_parameters(space, {{2.0, 1.0}}, all, options, 10);
+  // With 1000 residuals the curvature's errors are small (s^2 = J*/998), and the jackknife's win.
+  FitResult fit = fit_parameters(space, {{2.0, 1.0}}, all, options, 1000);
   ASSERT_NEAR(fit.best[0], mean_m, 1e-4);
   ASSERT_NEAR(std::log(fit.best[1]), mean_log_c, 1e-4);
   EXPECT_EQ(fit.uncertainty_method, "curvature");
-  jackknife_errors(space, fit, {{2.0, 1.0}}, objective, clusters, options, 10);
   ASSERT_EQ(fit.standard_error.size(), 2u);
-  EXPECT_EQ(fit.uncertainty_method, "jackknife over 5 tests");
+  const std::vector<double> curvature = fit.standard_error;
+  jackknife_errors(space, fit, {{2.0, 1.0}}, objective, clusters, options, 1000);
+  ASSERT_EQ(fit.standard_error.size(), 2u);
+  EXPECT_EQ(fit.uncertainty_method, "larger of the jackknife over 5 tests and the curvature");
   EXPECT_NEAR(fit.standard_error[0], sd_m / std::sqrt(double(clusters)), 1e-3);
   EXPECT_NEAR(fit.standard_error[1], fit.best[1] * sd_log_c / std::sqrt(double(clusters)), 1e-3);
+  EXPECT_LT(curvature[0], fit.standard_error[0]);
+  EXPECT_LT(curvature[1], fit.standard_error[1]);
+  // With 10 residuals s^2 = J*/8 is large: x's curvature error, sqrt(s^2 / 5), is the larger and stays.
+  FitResult few = fit_parameters(space, {{2.0, 1.0}}, all, options, 10);
+  const double curvature_x = few.standard_error.at(0);
+  EXPECT_NEAR(curvature_x, std::sqrt(few.objective / 8.0 / 5.0), 1e-4);
+  jackknife_errors(space, few, {{2.0, 1.0}}, objective, clusters, options, 10);
+  EXPECT_EQ(few.standard_error[0], curvature_x);
 }
 
 TEST(Fitting, UnitCoordinatesRoundTrip) {
