@@ -216,9 +216,8 @@ LeaveOneOutObjective leave_one_out(const MeasuredSet& set, const Yardstick& yard
 void add_jackknife(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant, ModelFit& m,
                    const DiagnosisOptions& options) {
   const LeaveOneOutObjective without = leave_one_out(set, yardstick, variant, options);
-  const int residuals = static_cast<int>((set.training.size() - 1) * measure_names().size());
   jackknife_errors(m.parameters, m.fit, {variant.reference()}, without, static_cast<int>(set.training.size()),
-                   fit_options_of(set), residuals);
+                   fit_options_of(set));
 }
 
 CandidateScore score(const MeasuredSet& set, Mechanism mechanism, ModelFit model, const ModelFit& against,

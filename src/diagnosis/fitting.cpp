@@ -347,7 +347,7 @@ FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<
 
 void jackknife_errors(const std::vector<Parameter>& space, FitResult& fit,
                       const std::vector<std::vector<double>>& references, const LeaveOneOutObjective& objective,
-                      int clusters, FitOptions options, int residual_count) {
+                      int clusters, FitOptions options) {
   const std::size_t n = space.size();
   // A flat direction (curvature not positive definite) is one the refits need not move along
   // either, so the jackknife cannot stand in for the curvature there.
@@ -363,7 +363,7 @@ void jackknife_errors(const std::vector<Parameter>& space, FitResult& fit,
   std::vector<std::vector<double>> refits;
   for (int t = 0; t < clusters; ++t) {
     const PopulationObjective without = [&](const std::vector<std::vector<double>>& points) { return objective(points, t); };
-    const FitResult refit = fit_parameters(space, starts, without, options, residual_count);
+    const FitResult refit = fit_parameters(space, starts, without, options, 0);
     fit.evaluations += refit.evaluations;
     fit.populations += refit.populations;
     std::vector<double> u(n);

@@ -88,7 +88,7 @@ using LeaveOneOutObjective =
 // `references`. A fit without curvature errors (not positive definite) is left without.
 void jackknife_errors(const std::vector<Parameter>& space, FitResult& fit,
                       const std::vector<std::vector<double>>& references, const LeaveOneOutObjective& objective,
-                      int clusters, FitOptions options, int residual_count);
+                      int clusters, FitOptions options);
 
 // Whether a fitted value ended on an edge of its search box: the tests pull it further than the
 // box allows, so the curvature there says nothing about its uncertainty.
