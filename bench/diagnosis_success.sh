@@ -3,10 +3,12 @@
 # mechanism (and for none), SEEDS data sets from `caskdem synthesize-measured`, each diagnosed
 # from the data alone. One CSV row per data set, then the rates per hidden effect.
 #
-#   bench/diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS] [INPUTS]
+#   bench/diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS] [INPUTS] [UNCERTAINTY]
 #
 # INPUTS sets [diagnosis] input_realisations (default 1: the measured table channel alone);
-# write each setting's rows to a CSV of its own.
+# write each setting's rows to a CSV of its own. UNCERTAINTY is diagnose's --uncertainty
+# (default curvature; jackknife makes the baseline's and the cause's standard errors the
+# larger of the jackknife's and the curvature's, at two fits per training test more).
 #
 # Beside OUT_CSV, OUT_CSV less .csv plus -parameters.csv gets one row per fitted parameter of
 # the hidden model (the baseline for none): the true value from the generator's truth.json, the
@@ -16,12 +18,13 @@
 # The seeds here start at 1001 so they are not the ones the CI tests use (101..110). About
 # 1 to 5 minutes per data set on 2 cores. Appends to OUT_CSV, so a stopped run resumes.
 set -eu
-build=${1:?usage: diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS] [INPUTS]}
-out=${2:?usage: diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS] [INPUTS]}
+build=${1:?usage: diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS] [INPUTS] [UNCERTAINTY]}
+out=${2:?usage: diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS] [INPUTS] [UNCERTAINTY]}
 seeds=${3:-20}
 first=${4:-1001}
 effects=${5:-"none velocity_dependent_friction amplitude_dependent_restitution eccentric_mass base_imperfection vertical_excitation floor_compliance out_of_plane_loss sensor_delay"}
 inputs=${6:-1}
+uncertainty=${7:-curvature}
 caskdem="$build/src/caskdem"
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
@@ -42,7 +45,7 @@ while [ "$i" -lt "$seeds" ]; do
     fi
     # The generator's specimen.toml ends with its [diagnosis] table.
     [ "$inputs" = 1 ] || echo "input_realisations = $inputs" >>"$dir/specimen.toml"
-    "$caskdem" diagnose "$dir" --out "$dir/diagnosis" --quiet --no-plot >/dev/null
+    "$caskdem" diagnose "$dir" --out "$dir/diagnosis" --quiet --no-plot --uncertainty "$uncertainty" >/dev/null
     /usr/bin/python3 - "$dir/diagnosis/diagnosis.json" "$effect" "$seed" >>"$out" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
