@@ -24,8 +24,9 @@ diagnosis::DiagnosisOptions options_for(int threads, bool quiet, const std::stri
 
 // How the standard errors were made (README, "Are the uncertainties right?").
 constexpr const char* kUncertaintyHelp =
-    "Standard errors from 'jackknife' (refit without each training test: one fit per test) or 'curvature' "
-    "(of the objective at the optimum: free, but an order of magnitude too small on rocking tests)";
+    "Standard errors from 'jackknife' (the larger of the curvature's and a jackknife's, which refits without each "
+    "training test: one fit per test) or 'curvature' (of the objective at the optimum: free, but an order of "
+    "magnitude too small on rocking tests)";
 
 void print_fit(const diagnosis::ModelFit& m) {
   if (!m.fit.uncertainty_method.empty()) std::cout << "  standard errors from the " << m.fit.uncertainty_method << "\n";
@@ -78,7 +79,7 @@ void add_diagnose(CLI::App& app) {
       std::string directory, out;
       int threads = 0;
       bool quiet = false, no_plot = false;
-      std::string uncertainty = "curvature";
+      std::string uncertainty = "jackknife";
     };
     auto options = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand(

@@ -209,7 +209,7 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
     md << "Standard errors from the " << d.baseline.fit.uncertainty_method
        << (d.baseline.fit.uncertainty_method == "curvature"
                ? " of the objective (local: on rocking tests an order of magnitude too small; `--uncertainty jackknife`)"
-               : " (the fit repeated without each training test)")
+               : " (the jackknife's fit repeated without each training test)")
        << ".\n\n";
   }
   md << "| parameter | value | standard error |\n|---|---|---|\n";
