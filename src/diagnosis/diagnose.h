@@ -39,8 +39,9 @@ struct DiagnosisOptions {
   double maximum_bic_delta = -10.0;
   double minimum_improved_fraction = 0.5;
   bool look_for_second_effect = true;
-  // Standard errors from refits without each training test (fitting.h) instead of the
-  // curvature: of the baseline, and of the cause if there is one. Costs a fit per training test.
+  // Standard errors of the baseline, and of the cause if there is one, raised to the jackknife's
+  // where larger (refits without each training test; fitting.h). Costs a fit per training test.
+  // Off here (the tests need no errors); the commands turn it on unless asked not to.
   bool jackknife = false;
   std::function<void(const std::string&)> log;  // progress lines (may be empty)
 };
