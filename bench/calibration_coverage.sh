@@ -28,17 +28,7 @@ while [ "$i" -lt "$seeds" ]; do
     if grep -q "^none,$seed,.*,$method\$" "$out"; then continue; fi
     [ -d "$dir" ] || "$caskdem" synthesize-measured --out "$dir" --seed "$seed" >/dev/null
     "$caskdem" calibrate-measured "$dir" --quiet --uncertainty "$method" --out "$dir/$method" >/dev/null
-    /usr/bin/python3 - "$dir/$method/calibration.json" "$dir/truth.json" "$seed" "$method" >>"$out" <<'PY'
-import json, sys
-fit, truth = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))["parameters"]
-seed, method = sys.argv[3], sys.argv[4]
-residuals = len(fit["training_tests"]) * 10  # ten error measures per test
-for name, p in sorted(fit["parameters"].items()):
-    se = p["standard_error"]
-    print(",".join(["none", seed, fit["model"], name, "%.6g" % truth[name], "%.6g" % p["value"],
-                    "" if se is None else "%.4g" % se, str(p["at_search_bound"]).lower(),
-                    "%.4f" % fit["training_objective"], str(residuals), method]))
-PY
+    /usr/bin/python3 "$(dirname "$0")/parameter_rows.py" "$dir/$method/calibration.json" "$dir/truth.json" none "$seed" "$method" >>"$out"
   done
   rm -rf "$dir"
   i=$((i + 1))

@@ -59,22 +59,7 @@ fields = [effect, seed, d["cause"], d["second_cause"] or "",
           "%.1f" % d["wall_time_s"]]
 print(",".join(fields))
 PY
-    /usr/bin/python3 - "$dir/diagnosis/diagnosis.json" "$dir/truth.json" "$effect" "$seed" >>"$parameters_out" <<'PY'
-import json, sys
-d, truth = json.load(open(sys.argv[1])), json.load(open(sys.argv[2]))["parameters"]
-effect, seed = sys.argv[3], sys.argv[4]
-fit = d["baseline"] if effect == "none" else next(r["fit"] for r in d["ranking"] if r["mechanism"] == effect)
-residuals = len(d["tests"]["training"]) * len(d["measures"])
-# No standard error: the fit did not beat the model it extends (the mechanism switched off),
-# its curvature was not positive definite, or the value is on its search bound.
-for name, p in sorted(fit["parameters"].items()):
-    if name not in truth:
-        continue
-    se = p["standard_error"]
-    print(",".join([effect, seed, fit["model"], name, "%.6g" % truth[name], "%.6g" % p["value"],
-                    "" if se is None else "%.4g" % se, str(p["at_search_bound"]).lower(),
-                    "%.4f" % fit["training_objective"], str(residuals)]))
-PY
+    /usr/bin/python3 "$(dirname "$0")/parameter_rows.py" "$dir/diagnosis/diagnosis.json" "$dir/truth.json" "$effect" "$seed" >>"$parameters_out"
     tail -n 1 "$out"
     rm -rf "$dir"
   done

@@ -22,11 +22,15 @@ diagnosis::DiagnosisOptions options_for(int threads, bool quiet, const std::stri
   return o;
 }
 
-// How the standard errors were made (README, "Are the uncertainties right?").
-constexpr const char* kUncertaintyHelp =
-    "Standard errors from 'jackknife' (the larger of the curvature's and a jackknife's, which refits without each "
-    "training test: one fit per test) or 'curvature' (of the objective at the optimum: free, but an order of "
-    "magnitude too small on rocking tests)";
+// --uncertainty: how the standard errors are made (README, "Are the uncertainties right?").
+void add_uncertainty_option(CLI::App* cmd, std::string& uncertainty, const std::string& whose) {
+  cmd->add_option("--uncertainty", uncertainty,
+                  "Standard errors from 'jackknife' (the larger of the curvature's and a jackknife's, which refits "
+                  "without each training test: one fit per test) or 'curvature' (of the objective at the optimum: "
+                  "free, but an order of magnitude too small on rocking tests)" + whose)
+      ->check(CLI::IsMember({"jackknife", "curvature"}))
+      ->capture_default_str();
+}
 
 void print_fit(const diagnosis::ModelFit& m) {
   if (!m.fit.uncertainty_method.empty()) std::cout << "  standard errors from the " << m.fit.uncertainty_method << "\n";
@@ -57,9 +61,7 @@ void add_diagnose(CLI::App& app) {
     cmd->add_option("--out", options->out, "Output directory (default DIRECTORY/calibration)");
     cmd->add_option("--threads", options->threads, "OpenMP threads")->check(CLI::NonNegativeNumber);
     cmd->add_flag("--quiet", options->quiet, "No progress lines");
-    cmd->add_option("--uncertainty", options->uncertainty, kUncertaintyHelp)
-        ->check(CLI::IsMember({"jackknife", "curvature"}))
-        ->capture_default_str();
+    add_uncertainty_option(cmd, options->uncertainty, "");
     cmd->callback([options]() {
       const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
       const diagnosis::ModelFit fit =
@@ -89,10 +91,7 @@ void add_diagnose(CLI::App& app) {
     cmd->add_option("--threads", options->threads, "OpenMP threads")->check(CLI::NonNegativeNumber);
     cmd->add_flag("--quiet", options->quiet, "No progress lines");
     cmd->add_flag("--no-plot", options->no_plot, "Do not make the PNGs");
-    cmd->add_option("--uncertainty", options->uncertainty,
-                    std::string(kUncertaintyHelp) + ", for the baseline and the cause")
-        ->check(CLI::IsMember({"jackknife", "curvature"}))
-        ->capture_default_str();
+    add_uncertainty_option(cmd, options->uncertainty, ", for the baseline and the cause");
     cmd->callback([options]() {
       const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
       for (const diagnosis::MeasuredTest& t : set.tests) {

@@ -68,7 +68,7 @@ struct FitResult {
   int evaluations = 0;             // points evaluated, all searches
   int populations = 0;             // lockstep runs
   std::vector<double> standard_error;  // physical units; empty when the curvature is not positive definite
-  std::string uncertainty_method;      // "curvature" or "jackknife over G tests"
+  std::string uncertainty_method;      // "curvature", or "larger of the jackknife over G tests and the curvature"
   std::string uncertainty_note;        // why there is none, when there is none
 };
 

@@ -28,7 +28,7 @@ nlohmann::json parameters_json(const ModelFit& m) {
     p["units"] = parameter.units;
     p["search_range"] = {parameter.low, parameter.high};
     p["at_search_bound"] = at_search_bound(parameter, m.fit.best[i]);
-    j[m.parameters[i].name] = p;
+    j[parameter.name] = p;
   }
   return j;
 }
