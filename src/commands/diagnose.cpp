@@ -1,10 +1,12 @@
 // Measured data in: caskdem calibrate-measured DIR, caskdem diagnose DIR, and
 // caskdem synthesize-measured (synthetic data with hidden mechanisms, for trying it out).
 
+#include <cmath>
 #include <filesystem>
 #include <iomanip>
 #include <iostream>
 #include <optional>
+#include <string>
 
 #include "commands/commands.h"
 #include "diagnosis/report.h"
@@ -21,6 +23,22 @@ diagnosis::DiagnosisOptions options_for(int threads, bool quiet, const std::stri
   if (!quiet) o.log = [](const std::string& line) { std::cerr << "diagnose: " << line << "\n"; };
   return o;
 }
+
+// A noise level: a finite number, zero or more (CLI11's own check prints the largest double).
+const CLI::Validator kNoiseLevel(
+    [](std::string& text) -> std::string {
+      std::size_t used = 0;
+      double value = 0.0;
+      try {
+        value = std::stod(text, &used);
+      } catch (const std::exception&) {
+        used = 0;
+      }
+      if (used != text.size() || used == 0) return "expected a number, got \"" + text + "\"";
+      if (!std::isfinite(value) || value < 0.0) return "expected a noise level of zero or more, got " + text;
+      return "";
+    },
+    "NONNEGATIVE");
 
 // --uncertainty: how the standard errors are made (README, "Are the uncertainties right?").
 void add_uncertainty_option(CLI::App* cmd, std::string& uncertainty, const std::string& whose) {
@@ -120,6 +138,7 @@ void add_diagnose(CLI::App& app) {
     struct Options {
       std::string out, effects;
       std::uint64_t seed = 1;
+      diagnosis::SyntheticSpec noise;  // its noise levels only
     };
     auto options = std::make_shared<Options>();
     CLI::App* cmd = app.add_subcommand(
@@ -127,8 +146,20 @@ void add_diagnose(CLI::App& app) {
     cmd->add_option("--out", options->out, "Directory to write")->required();
     cmd->add_option("--effect", options->effects, "Hidden mechanisms, comma separated (default: none)");
     cmd->add_option("--seed", options->seed, "Seed of the true values and the noise");
+    // Each noise can be switched off alone, to see what it does to a diagnosis: with the table's
+    // off, the true values reproduce every response channel to its own noise.
+    cmd->add_option("--rotation-noise", options->noise.rotation_noise, "Standard deviation of the rotation channel's noise, rad")
+        ->check(kNoiseLevel)
+        ->capture_default_str();
+    cmd->add_option("--slide-noise", options->noise.slide_noise, "Standard deviation of the sliding channel's noise, m")
+        ->check(kNoiseLevel)
+        ->capture_default_str();
+    cmd->add_option("--table-noise", options->noise.table_noise,
+                    "Standard deviation of the table channels' noise (horizontal and vertical), m/s^2")
+        ->check(kNoiseLevel)
+        ->capture_default_str();
     cmd->callback([options]() {
-      diagnosis::SyntheticSpec spec;
+      diagnosis::SyntheticSpec spec = options->noise;
       spec.seed = options->seed;
       spec.hidden = diagnosis::parse_mechanism_list(options->effects, "--effect");
       const diagnosis::SyntheticTruth truth = diagnosis::write_synthetic_measured_set(options->out, spec);

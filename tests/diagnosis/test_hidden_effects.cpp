@@ -45,6 +45,19 @@
 //   bench/results/diagnosis-success-predictive-trial.csv; README, "How often it is right").
 //   Four table inputs per test, other held-out pairs, and the held-out error pooled over four
 //   folds did not find it either (measured before the search changes).
+// - Why the truth scores worse than that fit (J 17.3 against 8.8): 13.2 of it is the earthquake
+//   test3's rocking duration and rate (-3.2 and -2.2 tolerances), and the cause is the table
+//   channel's noise, 0.3 mg. With the response channels' noise off test3 still loses 12 at the
+//   truth; with the table's off too, every residual there is the CSV files' rounding
+//   (`caskdem synthesize-measured --rotation-noise 0 --slide-noise 0 --table-noise 0`). The
+//   rocking duration runs from the first to the last excursion beyond 1 % of alpha, and test3's
+//   last one is a small late rock near that threshold, there or not as the noise falls.
+//   Measured as a significant duration instead (5 % to 95 % of the sum of theta^2, as
+//   Trifunac & Brady 1975 measure a record's duration), test3 loses 0.34 at the truth and the
+//   truth's J is 4.2 against 14.1 at that fit. It was not adopted: the fit then did not reach
+//   the truth's basin (the first fit on the sines stopped in a small local minimum at friction
+//   0.38, J 8.6 against 3.5 at the truth, and the full fit ended at 0.60, J 56.6), and the
+//   velocity-dependent friction of seed 101 was no longer found (held-out gain -1.45).
 // Each objective above can be checked with `caskdem evaluate-measured` on the data set that
 // `caskdem synthesize-measured --effect NAME --seed N` writes, at the values in its truth.json.
 
