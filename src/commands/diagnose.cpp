@@ -9,6 +9,7 @@
 #include <string>
 
 #include "commands/commands.h"
+#include "core/text.h"
 #include "diagnosis/report.h"
 #include "diagnosis/synthesize.h"
 
@@ -27,15 +28,9 @@ diagnosis::DiagnosisOptions options_for(int threads, bool quiet, const std::stri
 // A noise level: a finite number, zero or more (CLI11's own check prints the largest double).
 const CLI::Validator kNoiseLevel(
     [](std::string& text) -> std::string {
-      std::size_t used = 0;
-      double value = 0.0;
-      try {
-        value = std::stod(text, &used);
-      } catch (const std::exception&) {
-        used = 0;
-      }
-      if (used != text.size() || used == 0) return "expected a number, got \"" + text + "\"";
-      if (!std::isfinite(value) || value < 0.0) return "expected a noise level of zero or more, got " + text;
+      const std::optional<double> value = parse_double(trim(text));
+      if (!value) return "expected a number, got \"" + text + "\"";
+      if (!std::isfinite(*value) || *value < 0.0) return "expected a noise level of zero or more, got " + text;
       return "";
     },
     "NONNEGATIVE");

@@ -2,7 +2,6 @@
 // or key, and a non-zero exit; on good input, the promised files.
 
 #include <filesystem>
-#include <fstream>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -68,8 +67,7 @@ TEST_F(CommandLine, NoNanInResultFiles) {
   const auto out = dir_ / "out";
   ASSERT_EQ(run_caskdem("run " + testing::case_path("default-pulse.toml") + " --no-plot --out " + out.string()).status, 0);
   for (const char* name : {"summary.json", "history.csv"}) {
-    std::ifstream in(out / name);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string text = testing::file_text(out / name);
     EXPECT_EQ(text.find("nan"), std::string::npos) << name;
     EXPECT_EQ(text.find("inf"), std::string::npos) << name;
   }

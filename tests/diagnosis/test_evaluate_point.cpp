@@ -14,7 +14,6 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -202,8 +201,7 @@ TEST(SynthesizeMeasuredCommand, TakesEachNoiseLevelAndRefusesANegativeOne) {
   const Outcome o =
       run_caskdem("synthesize-measured --out " + directory + " --seed 3 --rotation-noise 0 --slide-noise 0 --table-noise 0");
   ASSERT_EQ(o.status, 0) << o.output;
-  std::ifstream truth(std::filesystem::path(directory) / "truth.json");
-  const std::string text((std::istreambuf_iterator<char>(truth)), std::istreambuf_iterator<char>());
+  const std::string text = testing::file_text(std::filesystem::path(directory) / "truth.json");
   EXPECT_THAT(text, ContainsRegex("\"rotation_rad\": 0\\.0"));
   EXPECT_THAT(text, ContainsRegex("\"table_m_s2\": 0\\.0"));
   const Outcome bad = run_caskdem("synthesize-measured --out " + directory + " --table-noise -1");

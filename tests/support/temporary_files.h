@@ -45,6 +45,12 @@ class TestDirectory {
   std::filesystem::path path_;
 };
 
+// The whole file as text (empty when it cannot be read).
+inline std::string file_text(const std::filesystem::path& file) {
+  std::ifstream in(file, std::ios::binary);
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
 // A fixture for tests that write small input files into their own directory.
 class TemporaryFiles : public ::testing::Test {
  protected:
@@ -57,8 +63,7 @@ class TemporaryFiles : public ::testing::Test {
   // The file `source` with its first `find` replaced by `replace`, written here as `name`.
   std::filesystem::path variant_of(const std::filesystem::path& source, const std::string& name,
                                    const std::string& find, const std::string& replace) const {
-    std::ifstream in(source, std::ios::binary);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    std::string text = file_text(source);
     const auto at = text.find(find);
     EXPECT_NE(at, std::string::npos) << source << " has no \"" << find << "\"";
     if (at != std::string::npos) text.replace(at, find.size(), replace);
