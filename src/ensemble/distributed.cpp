@@ -92,7 +92,6 @@ ExecuteReport execute_ensemble_distributed(const EnsemblePlan& plan, const Execu
   MPI_Allreduce(MPI_IN_PLACE, &rounds, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
 
   Progress progress(results.size, results.completed_count(), root && options.progress);
-  double last_checkpoint = file.elapsed();
   ExecuteReport report;
   std::vector<int> counts(mpi.size()), displacements(mpi.size());
   for (int round = 0; round < rounds; ++round) {
@@ -129,16 +128,11 @@ ExecuteReport execute_ensemble_distributed(const EnsemblePlan& plan, const Execu
       ++report.realisations_run;
     }
     progress.update(results.completed_count());
-    if (file.elapsed() - last_checkpoint >= plan.spec().checkpoint_interval) {
-      file.write(nullptr);
-      last_checkpoint = file.elapsed();
-    }
+    file.checkpoint_if_due();
   }
   if (root) {
     progress.finish();
-    report.limit_states = analyse(plan, results);
-    file.write(&report.limit_states);
-    report.wall_seconds = file.run().wall_seconds;
+    file.finish(report);
   }
   return report;
 }

@@ -22,8 +22,19 @@ double ResultFile::elapsed() const {
 }
 
 void ResultFile::write(const std::vector<LimitStateSummary>* summaries) {
-  run_.wall_seconds = earlier_wall_ + elapsed();
+  last_write_ = elapsed();
+  run_.wall_seconds = earlier_wall_ + last_write_;
   write_ensemble_file(output_, plan_, results_, run_, summaries);
+}
+
+void ResultFile::checkpoint_if_due() {
+  if (elapsed() - last_write_ >= plan_.spec().checkpoint_interval) write(nullptr);
+}
+
+void ResultFile::finish(ExecuteReport& report) {
+  report.limit_states = analyse(plan_, results_);
+  write(&report.limit_states);
+  report.wall_seconds = run_.wall_seconds;
 }
 
 ExecuteReport execute_ensemble(const EnsemblePlan& plan, const ExecuteOptions& options) {
@@ -35,7 +46,6 @@ ExecuteReport execute_ensemble(const EnsemblePlan& plan, const ExecuteOptions& o
   const std::vector<WorkBlock> blocks = make_blocks(plan, results.pending(), plan.spec().block_lanes);
   Progress progress(results.size, results.completed_count(), options.progress);
   std::int64_t done = results.completed_count();
-  double last_checkpoint = file.elapsed();
   ExecuteReport report;
   run_blocks(plan, blocks, options.isa, file.run().threads,
              [&](const WorkBlock& block, const std::vector<RealisationOutcome>& outcomes) {
@@ -45,15 +55,10 @@ ExecuteReport execute_ensemble(const EnsemblePlan& plan, const ExecuteOptions& o
                done += static_cast<std::int64_t>(block.indices.size());
                report.realisations_run += static_cast<std::int64_t>(block.indices.size());
                progress.update(done);
-               if (file.elapsed() - last_checkpoint >= plan.spec().checkpoint_interval) {
-                 file.write(nullptr);
-                 last_checkpoint = file.elapsed();
-               }
+               file.checkpoint_if_due();
              });
   progress.finish();
-  report.limit_states = analyse(plan, results);
-  file.write(&report.limit_states);
-  report.wall_seconds = file.run().wall_seconds;
+  file.finish(report);
   return report;
 }
 

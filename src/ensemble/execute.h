@@ -41,12 +41,18 @@ class ResultFile {
   // Writes the file as it stands (atomically; src/ensemble/results.h), with the limit states
   // when the run is complete.
   void write(const std::vector<LimitStateSummary>* summaries);
+  // Writes the file when the plan's checkpoint interval has passed since the last write, so a
+  // stopped run loses at most that much finished work.
+  void checkpoint_if_due();
+  // The run is complete: the fragility analysis into the report and the file, and the wall time.
+  void finish(ExecuteReport& report);
 
  private:
   const EnsemblePlan& plan_;
   std::filesystem::path output_;
   std::chrono::steady_clock::time_point start_ = std::chrono::steady_clock::now();
   double earlier_wall_ = 0.0;
+  double last_write_ = 0.0;  // s, elapsed() at the last write
   EnsembleResults results_;
   RunInformation run_;
 };
