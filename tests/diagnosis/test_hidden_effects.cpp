@@ -58,6 +58,14 @@
 //   the truth's basin (the first fit on the sines stopped in a small local minimum at friction
 //   0.38, J 8.6 against 3.5 at the truth, and the full fit ended at 0.60, J 56.6), and the
 //   velocity-dependent friction of seed 101 was no longer found (held-out gain -1.45).
+//   At the truth test3's rocking tail is chaotic, not merely near a threshold: over 15 copies
+//   of the measured table channel with fresh noise added its duration runs from 3.1 to 6.8 s
+//   (measured 5.2 s; the measured channel itself gives 3.3 s), and a 40 Hz low-pass of the
+//   noise-free channel moves it from 5.1 to 2.7 s. The tolerances' predictability is
+//   estimated at the nominal point, where that spread came out at 0.55 s from 8 noisy inputs;
+//   from 32 it left the truth's J at 16.0 against the fit's 10.2, so neither more realisations
+//   nor a threshold band (the measured duration moves by only 0.24 s within a quarter of the
+//   threshold either side) removes the miss.
 // Each objective above can be checked with `caskdem evaluate-measured` on the data set that
 // `caskdem synthesize-measured --effect NAME --seed N` writes, at the values in its truth.json.
 
