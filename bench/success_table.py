@@ -48,6 +48,12 @@ def read(path):
     return {(r["hidden"], int(r["seed"])): r for r in rows}
 
 
+def gain_text(row):
+    """The hidden mechanism's held-out gain; for the null case, the top mechanism's."""
+    gain = row["top_gain"] if row["hidden"] == "none" else row["hidden_gain"]
+    return "%.2f" % float(gain) if gain else "-"
+
+
 def seeds_text(seeds):
     seeds = sorted(seeds)
     if seeds == list(range(seeds[0], seeds[-1] + 1)):
@@ -96,10 +102,7 @@ def main():
             for k in shared:
                 a, b = earlier[k], now[k]
                 if a["cause"] != b["cause"]:
-                    def gain(r):
-                        top = r["hidden_gain"] if case != "none" else r["top_gain"]
-                        return "%.2f" % float(top) if top else "-"
-                    changes.append("%d: %s (%s) -> %s (%s)" % (k[1], a["cause"], gain(a), b["cause"], gain(b)))
+                    changes.append("%d: %s (%s) -> %s (%s)" % (k[1], a["cause"], gain_text(a), b["cause"], gain_text(b)))
             line += " %d of %d | %s |" % (before, len(shared), "; ".join(changes) or "-")
             totals[2] += before
             totals[3] += len(shared)

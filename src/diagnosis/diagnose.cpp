@@ -213,8 +213,8 @@ LeaveOneOutObjective leave_one_out(const MeasuredSet& set, const Yardstick& yard
 
 // The fit's standard errors from the jackknife over its training tests (fitting.h): the fit
 // repeated without each, from its optimum and the model's reference.
-void add_jackknife(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant, ModelFit& m,
-                   const DiagnosisOptions& options) {
+void add_jackknife(const MeasuredSet& set, const Yardstick& yardstick, ModelFit& m, const DiagnosisOptions& options) {
+  const ModelVariant variant(set.specimen, m.mechanisms, set.vertical_measured);
   const LeaveOneOutObjective without = leave_one_out(set, yardstick, variant, options);
   jackknife_errors(m.parameters, m.fit, {variant.reference()}, without, static_cast<int>(set.training.size()),
                    fit_options_of(set));
@@ -404,7 +404,7 @@ ModelFit calibrate_baseline(const MeasuredSet& set, const DiagnosisOptions& opti
   if (options.jackknife) {
     say(options, "standard errors: refitting without each of the " + std::to_string(set.training.size()) +
                      " training tests in turn (jackknife)");
-    add_jackknife(set, yardstick, ModelVariant(set.specimen, {}, set.vertical_measured), fit, options);
+    add_jackknife(set, yardstick, fit, options);
   }
   return fit;
 }
@@ -481,11 +481,8 @@ Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {
   if (options.jackknife) {
     say(options, "standard errors of the baseline" + std::string(cause != d.ranking.end() ? " and the cause" : "") +
                      ": refitting without each training test in turn (jackknife)");
-    add_jackknife(set, yardstick, baseline_variant, d.baseline, options);
-    if (cause != d.ranking.end()) {
-      add_jackknife(set, yardstick, ModelVariant(set.specimen, {cause->mechanism}, set.vertical_measured), cause->model,
-                    options);
-    }
+    add_jackknife(set, yardstick, d.baseline, options);
+    if (cause != d.ranking.end()) add_jackknife(set, yardstick, cause->model, options);
   }
   if (cause != d.ranking.end()) {
     d.cause = mechanism_name(cause->mechanism);
