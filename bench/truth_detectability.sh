@@ -36,9 +36,7 @@ while [ "$i" -lt "$seeds" ]; do
     "$caskdem" synthesize-measured --out "$dir" --seed "$seed" --effect "$effect" >/dev/null
     "$caskdem" calibrate-measured "$dir" --out "$dir/calibration" --quiet --uncertainty curvature >/dev/null
     "$caskdem" evaluate-measured "$dir" --from "$dir/calibration/calibration.json" --json "$dir/baseline.json" >/dev/null
-    # The truth's values as NAME=VALUE pairs (truth.json's "parameters").
-    at=$(/usr/bin/python3 -c 'import json, sys; p = json.load(open(sys.argv[1]))["parameters"]; print(",".join("%s=%.17g" % kv for kv in sorted(p.items())))' "$dir/truth.json")
-    "$caskdem" evaluate-measured "$dir" --model "$effect" --at "$at" --json "$dir/truth-evaluation.json" >/dev/null
+    "$caskdem" evaluate-measured "$dir" --model "$effect" --from "$dir/truth.json" --json "$dir/truth-evaluation.json" >/dev/null
     /usr/bin/python3 "$(dirname "$0")/truth_row.py" "$dir/baseline.json" "$dir/truth-evaluation.json" "$effect" "$seed" >>"$out"
     tail -n 1 "$out"
     rm -rf "$dir"

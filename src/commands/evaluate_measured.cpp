@@ -3,8 +3,9 @@
 // A fit says where its search ended; this says how any point fares by the same measure: a
 // published friction coefficient, a colleague's calibration, or the true values of a data set
 // made by synthesize-measured. Values come from --at NAME=VALUE (SI, in the units the
-// parameter list prints), else from a fit in a diagnosis.json or calibration.json (--from),
-// else from the specimen's nominal values with every mechanism switched off.
+// parameter list prints), else from a fit in a diagnosis.json or calibration.json, or the true
+// values in synthesize-measured's truth.json (--from), else from the specimen's nominal values
+// with every mechanism switched off.
 
 #include <charconv>
 #include <cmath>
@@ -69,12 +70,27 @@ const nlohmann::json* find_fit(const nlohmann::json& j, const std::string& model
 void take_from_file(const std::filesystem::path& file, const diagnosis::ModelVariant& variant,
                     std::vector<double>& point, std::vector<std::string>& source) {
   std::ifstream in(file);
-  if (!in) throw InputError(located(file, 0, "no such file (expected a diagnosis.json or calibration.json)"));
+  if (!in) throw InputError(located(file, 0, "no such file (expected a diagnosis.json, calibration.json or truth.json)"));
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(located(file, 0, std::string("not JSON: ") + e.what()));
+  }
+  // A truth.json of synthesize-measured: the values the data were made with, each a number.
+  if (j.is_object() && j.contains("hidden") && j.contains("parameters") && j["parameters"].is_object()) {
+    const nlohmann::json& truth = j["parameters"];
+    for (std::size_t i = 0; i < variant.parameters().size(); ++i) {
+      const diagnosis::Parameter& p = variant.parameters()[i];
+      if (!truth.contains(p.name) || !truth[p.name].is_number()) {
+        throw InputError(located(file, 0, "the truth has no number parameters." + p.name + " (it hides " +
+                                              j["hidden"].dump() + "; --model names the mechanisms to take)"));
+      }
+      point[i] = truth[p.name].get<double>();
+      check_in_box(p, point[i], file.string());
+      source[i] = file.filename().string();
+    }
+    return;
   }
   const nlohmann::json* fit = find_fit(j, variant.name());
   if (!fit) {
@@ -155,7 +171,7 @@ void add_evaluate_measured(CLI::App& app) {
   cmd->add_option("--model", options->model,
                   "baseline (default), a mechanism, or several joined by ',' or '+' (e.g. floor_compliance)");
   cmd->add_option("--at", options->at, "NAME=VALUE in SI units; repeat or separate with ','")->delimiter(',');
-  cmd->add_option("--from", options->from, "Take the model's fitted values from a diagnosis.json or calibration.json");
+  cmd->add_option("--from", options->from, "Take the model's values from a fit in a diagnosis.json or calibration.json, or from a truth.json of synthesize-measured");
   cmd->add_option("--json", options->json, "Also write the evaluation (per-test residuals) to this JSON file");
   cmd->add_option("--threads", options->threads, "OpenMP threads")->check(CLI::NonNegativeNumber);
   cmd->add_flag("--residuals", options->residuals, "Print every test's scaled residual per measure");

@@ -14,10 +14,12 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <cstdio>
 #include <string>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "diagnosis/diagnose.h"
 #include "diagnosis/measures.h"
@@ -221,6 +223,33 @@ TEST(EvaluateMeasuredCommand, TakesAFitFromAFileAndNamesAFileWithoutIt) {
   EXPECT_THAT(o.output, ContainsRegex("friction +0\\.3 +\\(--at\\)"));  // --at wins over --from
   expect_one_message(run_caskdem("evaluate-measured " + directory.string() + " --model sensor_delay --from " + file.string()),
                      file.string() + ": no fit of the model \"baseline + sensor_delay\"");
+}
+
+TEST(EvaluateMeasuredCommand, TakesTheTrueValuesFromTheGeneratorsTruth) {
+  const TestDirectory scratch;
+  const std::string directory = (scratch.path() / "layer").string();
+  ASSERT_EQ(run_caskdem("synthesize-measured --out " + directory + " --seed 3 --effect floor_compliance").status, 0);
+  const std::string truth = directory + "/truth.json";
+  const Outcome o = run_caskdem("evaluate-measured " + directory + " --model floor_compliance --from " + truth);
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_THAT(o.output, ContainsRegex("floor_soft_depth +[0-9.e-]+ +m +\\(truth\\.json\\)"));
+  EXPECT_THAT(o.output, ContainsRegex("friction +[0-9.]+ +\\(truth\\.json\\)"));
+  // The same values given one by one give the same judgement.
+  const nlohmann::json values = nlohmann::json::parse(testing::file_text(truth))["parameters"];
+  std::string at;
+  for (const auto& [name, value] : values.items()) {
+    char text[64];
+    std::snprintf(text, sizeof text, "%s=%.17g,", name.c_str(), value.get<double>());
+    at += text;
+  }
+  at.pop_back();
+  const Outcome by_hand = run_caskdem("evaluate-measured " + directory + " --model floor_compliance --at " + at);
+  ASSERT_EQ(by_hand.status, 0) << by_hand.output;
+  const auto objective = [](const std::string& output) { return output.substr(output.find("training J")); };
+  EXPECT_EQ(objective(o.output), objective(by_hand.output));
+  // The truth of a floor layer holds no eccentricity to take.
+  expect_one_message(run_caskdem("evaluate-measured " + directory + " --model eccentric_mass --from " + truth),
+                     "the truth has no number parameters.eccentricity (it hides [\"floor_compliance\"]");
 }
 
 }  // namespace
