@@ -1,8 +1,8 @@
 """The diagnoses' answers (bench/diagnosis_success.sh rows) beside what the truth itself scores
 on the same data sets (bench/truth_detectability.sh rows): a Markdown table, one row per
 hidden mechanism. A miss where the truth is significant is the search's or the objective's;
-a miss where it is not is the data's: at its true values the mechanism does not pass the
-diagnosis's own test. Given the answers' -parameters.csv too (seeds where it has the hidden
+in a miss where it is not, the mechanism at its true values does not pass the diagnosis's own
+test: judged so, the data do not show it beyond noise. Given the answers' -parameters.csv too (seeds where it has the hidden
 model's training objective), a miss where the truth is significant says whether the fit ended
 above the truth's J (the search did not reach it) or not (the objective prefers another point,
 which loses on the held-out tests).

@@ -3,18 +3,18 @@
 # bench/diagnosis_success.sh (same generator, same seeds), the hidden model at its true values
 # is judged as the diagnosis judges a fit (`caskdem evaluate-measured`), against the baseline
 # calibrated on the same data (`caskdem calibrate-measured`): its held-out gain, its BIC delta
-# and on how many held-out tests it is better. Where the truth itself is not significant, no
-# search could name the mechanism with these tests and this yardstick: the data, as judged,
-# do not show the effect beyond noise. Where it is, a miss is the search's or the objective's
-# (a lower training J elsewhere). bench/detectability_table.py sets these rows beside the
-# diagnoses' answers.
+# and on how many held-out tests it is better. Where the truth itself is not significant, the
+# data, judged by this yardstick at the true values, do not show the effect beyond noise (a fit
+# may still pass there, by matching what the truth cannot). Where it is, a miss is the search's
+# or the objective's (a lower training J elsewhere). bench/detectability_table.py sets these
+# rows beside the diagnoses' answers.
 #
 #   bench/truth_detectability.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS]
 #
 # The baseline here is calibrate-measured's fit. diagnose may refit it from the candidates'
 # baseline parameters and keep the refit when its J is lower, which can only raise the truth's
 # BIC delta: a truth that is not significant here is not significant in the diagnosis either.
-# About 6 s per data set on 2 cores. Appends to OUT_CSV, so a stopped run resumes.
+# About 3 s per data set on 2 cores. Appends to OUT_CSV, so a stopped run resumes.
 set -eu
 usage="usage: truth_detectability.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS]"
 build=${1:?$usage}
