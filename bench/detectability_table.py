@@ -12,17 +12,13 @@ which loses on the held-out tests).
 import csv
 import sys
 
+from truth_row import failed_criteria
+
 
 def failing(row):
-    """Which of the significance criteria the truth fails (diagnose.cpp, score), with its value."""
-    reasons = []
-    if float(row["truth_gain"]) < 0.2:
-        reasons.append("gain %.2f" % float(row["truth_gain"]))
-    if float(row["truth_bic_delta"]) > -10.0:
-        reasons.append("BIC %+.1f" % float(row["truth_bic_delta"]))
-    if 2 * int(row["heldout_tests_improved"]) < int(row["heldout_tests"]):
-        reasons.append("%s of %s tests better" % (row["heldout_tests_improved"], row["heldout_tests"]))
-    return ", ".join(reasons)
+    """Which of the significance criteria the truth fails, with its value."""
+    return ", ".join(failed_criteria(float(row["truth_gain"]), float(row["truth_bic_delta"]),
+                                     int(row["heldout_tests_improved"]), int(row["heldout_tests"])))
 
 
 def seed_list(rows, describe=None):

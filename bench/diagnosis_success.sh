@@ -27,27 +27,18 @@ effects=${5:-"none velocity_dependent_friction amplitude_dependent_restitution e
 inputs=${6:-1}
 uncertainty=${7:-curvature}
 caskdem="$build/src/caskdem"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "$0")/synthetic_sets.sh"
 parameters_out="${out%.csv}-parameters.csv"
 [ -s "$out" ] || echo "hidden,seed,cause,second_cause,hidden_gain,hidden_bic_delta,hidden_significant,top,top_gain,wall_s" >"$out"
 [ -s "$parameters_out" ] || echo "hidden,seed,model,parameter,truth,fitted,standard_error,at_search_bound,training_objective,training_residuals" >"$parameters_out"
 
-i=0
-while [ "$i" -lt "$seeds" ]; do
-  seed=$((first + i))
-  for effect in $effects; do
-    if grep -q "^$effect,$seed," "$out"; then continue; fi
-    dir="$work/$effect-$seed"
-    if [ "$effect" = none ]; then
-      "$caskdem" synthesize-measured --out "$dir" --seed "$seed" >/dev/null
-    else
-      "$caskdem" synthesize-measured --out "$dir" --seed "$seed" --effect "$effect" >/dev/null
-    fi
-    # The generator's specimen.toml ends with its [diagnosis] table.
-    [ "$inputs" = 1 ] || echo "input_realisations = $inputs" >>"$dir/specimen.toml"
-    "$caskdem" diagnose "$dir" --out "$dir/diagnosis" --quiet --no-plot --uncertainty "$uncertainty" >/dev/null
-    /usr/bin/python3 - "$dir/diagnosis/diagnosis.json" "$effect" "$seed" >>"$out" <<'PY'
+# One data set: diagnosed, its row and its hidden model's parameter rows.
+diagnose_set() {
+  dir=$1 effect=$2 seed=$3
+  # The generator's specimen.toml ends with its [diagnosis] table.
+  [ "$inputs" = 1 ] || echo "input_realisations = $inputs" >>"$dir/specimen.toml"
+  "$caskdem" diagnose "$dir" --out "$dir/diagnosis" --quiet --no-plot --uncertainty "$uncertainty" >/dev/null
+  /usr/bin/python3 - "$dir/diagnosis/diagnosis.json" "$effect" "$seed" >>"$out" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
 effect, seed = sys.argv[2], sys.argv[3]
@@ -60,12 +51,11 @@ fields = [effect, seed, d["cause"], d["second_cause"] or "",
           "%.1f" % d["wall_time_s"]]
 print(",".join(fields))
 PY
-    /usr/bin/python3 "$(dirname "$0")/parameter_rows.py" "$dir/diagnosis/diagnosis.json" "$dir/truth.json" "$effect" "$seed" >>"$parameters_out"
-    tail -n 1 "$out"
-    rm -rf "$dir"
-  done
-  i=$((i + 1))
-done
+  /usr/bin/python3 "$(dirname "$0")/parameter_rows.py" "$dir/diagnosis/diagnosis.json" "$dir/truth.json" "$effect" "$seed" >>"$parameters_out"
+  tail -n 1 "$out"
+}
+
+for_each_new_set "$out" "$seeds" "$first" "$effects" diagnose_set
 
 /usr/bin/python3 - "$out" <<'PY'
 import csv, sys

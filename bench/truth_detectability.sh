@@ -23,23 +23,17 @@ seeds=${3:-20}
 first=${4:-1001}
 effects=${5:-"velocity_dependent_friction amplitude_dependent_restitution eccentric_mass base_imperfection vertical_excitation floor_compliance out_of_plane_loss sensor_delay"}
 caskdem="$build/src/caskdem"
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
+. "$(dirname "$0")/synthetic_sets.sh"
 [ -s "$out" ] || echo "hidden,seed,baseline_objective,truth_objective,baseline_heldout_error,truth_heldout_error,truth_gain,truth_bic_delta,heldout_tests_improved,heldout_tests,truth_significant,truth_worst_test,truth_worst_loss,baseline_loss_there" >"$out"
 
-i=0
-while [ "$i" -lt "$seeds" ]; do
-  seed=$((first + i))
-  for effect in $effects; do
-    if grep -q "^$effect,$seed," "$out"; then continue; fi
-    dir="$work/$effect-$seed"
-    "$caskdem" synthesize-measured --out "$dir" --seed "$seed" --effect "$effect" >/dev/null
-    "$caskdem" calibrate-measured "$dir" --out "$dir/calibration" --quiet --uncertainty curvature >/dev/null
-    "$caskdem" evaluate-measured "$dir" --from "$dir/calibration/calibration.json" --json "$dir/baseline.json" >/dev/null
-    "$caskdem" evaluate-measured "$dir" --model "$effect" --from "$dir/truth.json" --json "$dir/truth-evaluation.json" >/dev/null
-    /usr/bin/python3 "$(dirname "$0")/truth_row.py" "$dir/baseline.json" "$dir/truth-evaluation.json" "$effect" "$seed" >>"$out"
-    tail -n 1 "$out"
-    rm -rf "$dir"
-  done
-  i=$((i + 1))
-done
+# One data set: the baseline calibrated, then it and the truth judged alike.
+judge_truth() {
+  dir=$1 effect=$2 seed=$3
+  "$caskdem" calibrate-measured "$dir" --out "$dir/calibration" --quiet --uncertainty curvature >/dev/null
+  "$caskdem" evaluate-measured "$dir" --from "$dir/calibration/calibration.json" --json "$dir/baseline.json" >/dev/null
+  "$caskdem" evaluate-measured "$dir" --model "$effect" --from "$dir/truth.json" --json "$dir/truth-evaluation.json" >/dev/null
+  /usr/bin/python3 "$(dirname "$0")/truth_row.py" "$dir/baseline.json" "$dir/truth-evaluation.json" "$effect" "$seed" >>"$out"
+  tail -n 1 "$out"
+}
+
+for_each_new_set "$out" "$seeds" "$first" "$effects" judge_truth

@@ -77,33 +77,32 @@ void take_from_file(const std::filesystem::path& file, const diagnosis::ModelVar
   } catch (const nlohmann::json::parse_error& e) {
     throw InputError(located(file, 0, std::string("not JSON: ") + e.what()));
   }
-  // A truth.json of synthesize-measured: the values the data were made with, each a number.
-  if (j.is_object() && j.contains("hidden") && j.contains("parameters") && j["parameters"].is_object()) {
-    const nlohmann::json& truth = j["parameters"];
-    for (std::size_t i = 0; i < variant.parameters().size(); ++i) {
-      const diagnosis::Parameter& p = variant.parameters()[i];
-      if (!truth.contains(p.name) || !truth[p.name].is_number()) {
-        throw InputError(located(file, 0, "the truth has no number parameters." + p.name + " (it hides " +
-                                              j["hidden"].dump() + "; --model names the mechanisms to take)"));
-      }
-      point[i] = truth[p.name].get<double>();
-      check_in_box(p, point[i], file.string());
-      source[i] = file.filename().string();
-    }
-    return;
-  }
-  const nlohmann::json* fit = find_fit(j, variant.name());
+  // A truth.json of synthesize-measured holds the values the data were made with, each a
+  // number; a fit holds each value in an object beside its standard error.
+  const bool is_truth = j.is_object() && j.contains("hidden") && j.contains("parameters") && j["parameters"].is_object();
+  const nlohmann::json* fit = is_truth ? &j : find_fit(j, variant.name());
   if (!fit) {
     throw InputError(located(file, 0, "no fit of the model \"" + variant.name() +
                                           "\" in it (expected a \"model\" of that name with \"parameters\")"));
   }
+  const nlohmann::json& parameters = (*fit)["parameters"];
+  const auto entry_of = [&](const std::string& name) -> const nlohmann::json* {
+    if (!parameters.contains(name)) return nullptr;
+    const nlohmann::json& entry = parameters[name];
+    if (is_truth) return &entry;
+    return entry.is_object() && entry.contains("value") ? &entry["value"] : nullptr;
+  };
   for (std::size_t i = 0; i < variant.parameters().size(); ++i) {
     const diagnosis::Parameter& p = variant.parameters()[i];
-    const nlohmann::json& parameters = (*fit)["parameters"];
-    if (!parameters.contains(p.name) || !parameters[p.name].contains("value") || !parameters[p.name]["value"].is_number()) {
-      throw InputError(located(file, 0, "the fit of \"" + variant.name() + "\" has no number parameters." + p.name + ".value"));
+    const nlohmann::json* value = entry_of(p.name);
+    if (!value || !value->is_number()) {
+      throw InputError(located(
+          file, 0,
+          is_truth ? "the truth has no number parameters." + p.name + " (it hides " + j["hidden"].dump() +
+                         "; --model names the mechanisms to take)"
+                   : "the fit of \"" + variant.name() + "\" has no number parameters." + p.name + ".value"));
     }
-    point[i] = parameters[p.name]["value"].get<double>();
+    point[i] = value->get<double>();
     check_in_box(p, point[i], file.string());
     source[i] = file.filename().string();
   }
