@@ -2,7 +2,7 @@
 # Success and false-alarm rates of `caskdem diagnose` on synthetic measured data: for each
 # mechanism (and for none), SEEDS data sets from `caskdem synthesize-measured`, each diagnosed
 # from the data alone. One CSV row per data set, then the rates per hidden effect
-# (bench/success_table.py makes the README's table of them, intervals included).
+# (bench/success_table.py makes the table of them in docs/diagnosis-accuracy.md, intervals included).
 #
 #   bench/diagnosis_success.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS] [INPUTS] [UNCERTAINTY]
 #

@@ -35,7 +35,7 @@ const CLI::Validator kNoiseLevel(
     },
     "NONNEGATIVE");
 
-// --uncertainty: how the standard errors are made (README, "Are the uncertainties right?").
+// --uncertainty: how the standard errors are made (docs/diagnosis-accuracy.md, "Are the uncertainties right?").
 void add_uncertainty_option(CLI::App* cmd, std::string& uncertainty, const std::string& whose) {
   cmd->add_option("--uncertainty", uncertainty,
                   "Standard errors from 'jackknife' (the larger of the curvature's and a jackknife's, which refits "

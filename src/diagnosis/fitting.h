@@ -25,7 +25,7 @@
 // (Gauss-Newton, Bates & Watts 1988). H comes from central finite differences, evaluated as one
 // more population. It assumes independent residuals and a smooth J; on rocking tests neither
 // holds (a test's residuals move together, and a test on a knife edge pulls the fit by more
-// than its curvature says), and it understates the error by an order of magnitude (README,
+// than its curvature says), and it understates the error by an order of magnitude (docs/diagnosis-accuracy.md,
 // "Are the uncertainties right?"). The jackknife over clusters (the tests): the fit repeated
 // with each cluster left out, x_(t), and var x_i = (G - 1)/G sum_t (x_(t),i - mean)^2 (Efron &
 // Stein 1981; Efron & Tibshirani 1993, ch. 11), in unit coordinates, then scaled to physical

@@ -2,7 +2,7 @@
 bands and the stripe probabilities with their binomial intervals.
 
 Usage: plot_fragility.py RESULT.h5 OUT.png
-Reads the layout written by `caskdem ensemble` (README, "Ensemble output").
+Reads the layout written by `caskdem ensemble` (README, "Output layout").
 """
 import math
 import sys

@@ -5,7 +5,7 @@
 // and that its held-out gain is positive and significant. Data from the baseline model plus
 // noise must give "none"; with two effects hidden, the stronger comes first. Seeds differ
 // from test to test; success rates over more seeds are measured outside CI
-// (bench/diagnosis_success.sh, README "Measured data").
+// (bench/diagnosis_success.sh, docs/diagnosis-accuracy.md).
 //
 // Velocity-dependent friction (seed 101) is found since each fit starts one local search per
 // explored basin (fitting.h, basin_radius) and one more from a first fit on the predictable
@@ -42,7 +42,7 @@
 //   likelihood over the fitted point and 32 draws from the fit's Laplace posterior): it names
 //   the layer (gain 0.54) and all ten tests here pass with it, but over seeds 1001 to 1008
 //   the friction was named in 3 of 8 against 4, and once a wrong cause was named (rows in
-//   bench/results/diagnosis-success-predictive-trial.csv; README, "How often it is right").
+//   bench/results/diagnosis-success-predictive-trial.csv; docs/diagnosis-accuracy.md, "How often it is right").
 //   Four table inputs per test, other held-out pairs, and the held-out error pooled over four
 //   folds did not find it either (measured before the search changes).
 // - Why the truth scores worse than that fit (J 17.3 against 8.8): 13.2 of it is the earthquake

@@ -3,8 +3,8 @@
 // in test_fitting.cpp; here, that each refit's objective leaves out exactly one training test
 // and keeps every other, summed as the fits sum them: at any point, J without test k equals the
 // sum of the other training tests' losses as evaluate_point judges them one by one. How often
-// the errors cover the true values is measured outside CI (bench/parameter_coverage.py; README,
-// "Are the uncertainties right?").
+// the errors cover the true values is measured outside CI (bench/parameter_coverage.py;
+// docs/diagnosis-accuracy.md, "Are the uncertainties right?").
 
 #include <string>
 
