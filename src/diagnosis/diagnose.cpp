@@ -108,16 +108,19 @@ std::vector<double> objective_over(const MeasuredSet& set, const Yardstick& yard
   return total;
 }
 
+// The scaled residuals that the losses of some tests sum: every compared measure of each.
+int residual_count(const Yardstick& yardstick, const std::vector<int>& tests) {
+  std::size_t count = 0;
+  for (int t : tests) count += compared_count(yardstick.references[t]);
+  return static_cast<int>(count);
+}
+
 // The error over some tests: sqrt of the mean loss per residual (the RMS of the residuals where
 // they are within a few tolerances).
-double error_of(const std::vector<double>& loss, const std::vector<std::vector<double>>& residuals,
-                const std::vector<int>& tests) {
+double error_of(const std::vector<double>& loss, const Yardstick& yardstick, const std::vector<int>& tests) {
   double sum = 0.0;
-  std::size_t count = 0;
-  for (int t : tests) {
-    sum += loss[t];
-    count += residuals[t].size();
-  }
+  for (int t : tests) sum += loss[t];
+  const int count = residual_count(yardstick, tests);
   return count > 0 ? std::sqrt(sum / double(count)) : 0.0;
 }
 
@@ -129,11 +132,6 @@ Judged judge_at(const MeasuredSet& set, const Yardstick& yardstick, const ModelV
   Judged judged;
   (void)objective_over(set, yardstick, variant, all, {point}, options, &judged);
   return judged;
-}
-
-// The scaled residuals a training objective sums: every measure of every training test.
-int training_residual_count(const MeasuredSet& set) {
-  return static_cast<int>(set.training.size() * measure_names().size());
 }
 
 // Information criteria of a fit with loss J over n residuals and k parameters (diagnose.h).
@@ -162,7 +160,7 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
   m.mechanisms = variant.mechanisms();
   m.name = variant.name();
   m.parameters = variant.parameters();
-  m.training_residual_count = training_residual_count(set);
+  m.training_residual_count = residual_count(yardstick, set.training);
   const PopulationObjective objective = [&](const std::vector<std::vector<double>>& points) {
     return objective_over(set, yardstick, variant, set.training, points, options);
   };
@@ -184,7 +182,7 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
     FitOptions first_options = fit_options;
     first_options.refinement = 0;
     first_options.standard_errors = false;
-    const int predictable_residuals = static_cast<int>(predictable.size() * measure_names().size());
+    const int predictable_residuals = residual_count(yardstick, predictable);
     const FitResult first = fit_parameters(m.parameters, starts, predictable_objective, first_options, predictable_residuals);
     add_start(first.best);
   }
@@ -195,7 +193,7 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
   m.residuals = std::move(judged.residuals);
   m.bic = bic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
   m.aic = aic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
-  m.heldout_error = error_of(m.loss, m.residuals, set.heldout);
+  m.heldout_error = error_of(m.loss, yardstick, set.heldout);
   return m;
 }
 
@@ -420,14 +418,15 @@ PointEvaluation evaluate_point(const MeasuredSet& set, const std::vector<Mechani
   e.model = variant.name();
   e.parameters = variant.parameters();
   e.point = point;
-  Judged judged = judge_at(set, yardstick_of(set), variant, point, options);
+  const Yardstick yardstick = yardstick_of(set);
+  Judged judged = judge_at(set, yardstick, variant, point, options);
   e.residuals = std::move(judged.residuals);
   e.loss = std::move(judged.loss);
   // Summed in the order of the training tests, as the fits' objective is.
   for (int t : set.training) e.training_objective += e.loss[t];
-  e.training_residual_count = training_residual_count(set);
+  e.training_residual_count = residual_count(yardstick, set.training);
   e.bic = bic_of(e.training_objective, e.training_residual_count, e.parameters.size());
-  e.heldout_error = error_of(e.loss, e.residuals, set.heldout);
+  e.heldout_error = error_of(e.loss, yardstick, set.heldout);
   return e;
 }
 

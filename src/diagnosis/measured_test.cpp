@@ -68,16 +68,25 @@ struct ChannelSpec {
   std::string_view name;  // the column name in the file
   std::string_view unit;
   bool required;
+  // Larger magnitudes are not a measurement of a cask on a shaking table (a value in other
+  // units, or a corrupt field), and would overflow the error measures' squares.
+  double largest;
+  std::string_view largest_text;  // what `largest` is, for messages
 };
 
+constexpr double kInfinity = std::numeric_limits<double>::infinity();
+
 constexpr std::array<ChannelSpec, kChannelCount> kChannels{{
-    {"t", "s", true},
-    {"table_acc", "m/s^2", true},
-    {"table_acc_v", "m/s^2", false},
-    {"theta", "rad", true},
-    {"slide", "m", true},
-    {"theta_dot", "rad/s", false},
+    {"t", "s", true, kInfinity, ""},
+    {"table_acc", "m/s^2", true, 1e3, "1000 m/s^2 (about 100 g)"},
+    {"table_acc_v", "m/s^2", false, 1e3, "1000 m/s^2 (about 100 g)"},
+    {"theta", "rad", true, 2.0 * 3.141592653589793, "2 pi rad (a whole turn)"},
+    {"slide", "m", true, 100.0, "100 m"},
+    {"theta_dot", "rad/s", false, 1e3, "1000 rad/s"},
 }};
+
+// A smaller sampling step is not a shaking-table record (t in other units, or a corrupt column).
+constexpr double kSmallestSamplingStep = 1e-6;
 
 using Series = std::vector<double>;  // NaN where a sample is missing
 using Mask = std::vector<std::uint8_t>;
@@ -259,6 +268,10 @@ double parse_value(const Reporter& report, long line_number, Channel channel, st
   if (!value)
     report.fail(line_number, found + "; expected a number" + hint + ", or an empty field or nan for a missing value");
   if (!std::isfinite(*value)) report.fail(line_number, found + "; expected a finite number");
+  const ChannelSpec& spec = kChannels[channel];
+  if (std::abs(*value) > spec.largest)
+    report.fail(line_number, found + "; expected at most " +
+                                 std::string(spec.largest_text) + " in magnitude (are the units SI?)");
   return *value;
 }
 
@@ -365,6 +378,20 @@ Uniform make_uniform(Reporter& report, const Columns& columns) {
   std::vector<double> steps(n - 1);
   for (std::size_t k = 0; k + 1 < n; ++k) steps[k] = t[k + 1] - t[k];
   const double step = median(steps);
+  if (!(step >= kSmallestSamplingStep))
+    report.fail(0, kTime, "the median sampling step is " + number_text(step) + " s; expected at least " +
+                              number_text(kSmallestSamplingStep) + " s (is t in seconds?)");
+  // Resampling would invent the table motion across a jump in time: it is a gap in the input.
+  const auto longest = std::max_element(steps.begin(), steps.end());
+  if (*longest - step > kLongestBridgedInputGap + kGapRoundoff) {
+    const auto k = static_cast<std::size_t>(longest - steps.begin());
+    report.fail(columns.line[k + 1], "t jumps from " + number_text(t[k]) + " s (line " +
+                                                std::to_string(columns.line[k]) + ") to " + number_text(t[k + 1]) +
+                                                " s, a gap of " + number_text(*longest - step) +
+                                                " s in the table channel; expected gaps of at most " +
+                                                number_text(kLongestBridgedInputGap) +
+                                                " s (mark missing samples with empty fields or nan, or split the test)");
+  }
 
   Uniform uniform;
   uniform.step = step;
@@ -621,9 +648,12 @@ MeasuredTest read_measured_test(const std::filesystem::path& csv) {
   }
 
   Response rotation = prepare_response(report, uniform, kRotation);
+  Response slide = prepare_response(report, uniform, kSlide);
+  if (!rotation.usable() && !slide.usable())
+    report.fail(0, "neither theta nor slide has a usable sample (missing, constant or clipped throughout); expected "
+                   "at least one response channel to compare a simulation with");
   test.rotation = std::move(rotation.values);
   test.rotation_valid = std::move(rotation.valid);
-  Response slide = prepare_response(report, uniform, kSlide);
   test.slide = std::move(slide.values);
   test.slide_valid = std::move(slide.valid);
   if (layout.column[kAngularVelocity]) {

@@ -157,7 +157,17 @@ TestReference reference_of(const MeasuredTest& test, double stability_angle) {
       std::max(2.0 * test.time_step, 0.01),                        // rotation_lag, s
   };
   for (double& t : r.tolerance) t = std::max(t, 1e-12);
+  const auto has_sample = [](const std::vector<std::uint8_t>& valid) {
+    return std::uint8_t(std::find(valid.begin(), valid.end(), 1) != valid.end());
+  };
+  const std::uint8_t rotation_used = has_sample(test.rotation_valid), slide_used = has_sample(test.slide_valid);
+  r.compared = {rotation_used, rotation_used, rotation_used, rotation_used, rotation_used,
+                rotation_used, slide_used,    slide_used,    slide_used,    rotation_used};
   return r;
+}
+
+std::size_t compared_count(const TestReference& reference) {
+  return static_cast<std::size_t>(std::count(reference.compared.begin(), reference.compared.end(), 1));
 }
 
 SimulatedHistory delayed(const SimulatedHistory& h, const std::vector<double>& time, double delay) {
@@ -196,7 +206,8 @@ std::vector<double> residuals(const MeasuredTest& test, const TestReference& ref
           : 0.0,
   };
   std::vector<double> scaled(differences.size());
-  for (std::size_t i = 0; i < differences.size(); ++i) scaled[i] = differences[i] / reference.tolerance[i];
+  for (std::size_t i = 0; i < differences.size(); ++i)
+    scaled[i] = reference.compared[i] ? differences[i] / reference.tolerance[i] : 0.0;
   return scaled;
 }
 

@@ -54,7 +54,14 @@ struct TestReference {
   double slide_noise = 0.0;     // m
   double rocking_threshold = 0.0;  // rad
   std::vector<double> tolerance;   // per measure
+  // Per measure, 1 where it is compared: a channel with no usable sample (missing or dead
+  // throughout) leaves its measures out, with a residual of 0 that is not counted.
+  std::vector<std::uint8_t> compared;
 };
+
+// How many of a test's measures are compared (the residuals an objective or error counts).
+std::size_t compared_count(const TestReference& reference);
+
 
 // White-noise level of a sampled signal from its second differences, std(x[k+1] - 2 x[k] +
 // x[k-1]) / sqrt(6), over the samples whose neighbours are valid (all when `valid` is null).

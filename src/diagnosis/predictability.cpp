@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <exception>
 
 #include "diagnosis/measures.h"
 #include "diagnosis/mechanisms.h"
@@ -52,38 +53,55 @@ std::vector<MeasuredTest> input_realisations(const MeasuredTest& test, std::size
   return inputs;
 }
 
+namespace {
+
+// Widens one test's tolerances by the spread of its measures over the realisations.
+void widen_by_spread(TestReference& reference, const MeasuredTest& test, std::size_t test_index,
+                     const ModelVariant& variant, const std::vector<double>& x, int realisations, std::uint64_t seed) {
+  const std::size_t measures = measure_names().size();
+  const double noise = noise_level(test.table_acceleration);
+  std::vector<std::vector<double>> values(measures);
+  for (int r = 0; r < realisations; ++r) {
+    // The same parameter draw for every test of a realisation (counter "test" 0xffff).
+    std::vector<double> moved = x;
+    for (int i = 0; i < 3; ++i) {
+      const Parameter& p = variant.parameters()[i];
+      moved[i] = std::clamp(x[i] * std::exp(kParameterSpread[i] * normal(seed, 0xffff, r, i)), p.low, p.high);
+    }
+    MeasuredTest perturbed = test;
+    add_table_noise(perturbed.table_acceleration, noise, seed, test_index, r, kPredictabilityStream);
+    const SimulatedHistory h = delayed(simulate_test(variant, perturbed, {moved}, InstructionSet::automatic)[0],
+                                       perturbed.time, variant.sensor_delay(moved));
+    // Residual times tolerance: the raw difference of each measure from the measured value.
+    const std::vector<double> scaled = residuals(test, reference, h);
+    for (std::size_t m = 0; m < measures; ++m) values[m].push_back(scaled[m] * reference.tolerance[m]);
+  }
+  for (std::size_t m = 0; m < measures; ++m) {
+    double mean = 0.0;
+    for (double v : values[m]) mean += v;
+    mean /= realisations;
+    double ss = 0.0;
+    for (double v : values[m]) ss += (v - mean) * (v - mean);
+    const double spread = realisations > 1 ? std::sqrt(ss / (realisations - 1)) : 0.0;
+    reference.tolerance[m] = std::hypot(reference.tolerance[m], spread);
+  }
+}
+
+}  // namespace
+
 void add_predictability(std::vector<TestReference>& references, const std::vector<MeasuredTest>& tests,
                         const ModelVariant& variant, const std::vector<double>& x, int realisations, std::uint64_t seed) {
-  const std::size_t measures = measure_names().size();
+  std::exception_ptr failure;  // an exception may not leave an OpenMP region: rethrown after it
 #pragma omp parallel for schedule(dynamic, 1)
   for (std::size_t t = 0; t < tests.size(); ++t) {
-    const double noise = noise_level(tests[t].table_acceleration);
-    std::vector<std::vector<double>> values(measures);
-    for (int r = 0; r < realisations; ++r) {
-      // The same parameter draw for every test of a realisation (counter "test" 0xffff).
-      std::vector<double> moved = x;
-      for (int i = 0; i < 3; ++i) {
-        const Parameter& p = variant.parameters()[i];
-        moved[i] = std::clamp(x[i] * std::exp(kParameterSpread[i] * normal(seed, 0xffff, r, i)), p.low, p.high);
-      }
-      MeasuredTest perturbed = tests[t];
-      add_table_noise(perturbed.table_acceleration, noise, seed, t, r, kPredictabilityStream);
-      const SimulatedHistory h = delayed(simulate_test(variant, perturbed, {moved}, InstructionSet::automatic)[0],
-                                         perturbed.time, variant.sensor_delay(moved));
-      // Residual times tolerance: the raw difference of each measure from the measured value.
-      const std::vector<double> scaled = residuals(tests[t], references[t], h);
-      for (std::size_t m = 0; m < measures; ++m) values[m].push_back(scaled[m] * references[t].tolerance[m]);
-    }
-    for (std::size_t m = 0; m < measures; ++m) {
-      double mean = 0.0;
-      for (double v : values[m]) mean += v;
-      mean /= realisations;
-      double ss = 0.0;
-      for (double v : values[m]) ss += (v - mean) * (v - mean);
-      const double spread = realisations > 1 ? std::sqrt(ss / (realisations - 1)) : 0.0;
-      references[t].tolerance[m] = std::hypot(references[t].tolerance[m], spread);
+    try {
+      widen_by_spread(references[t], tests[t], t, variant, x, realisations, seed);
+    } catch (...) {
+#pragma omp critical
+      failure = std::current_exception();
     }
   }
+  if (failure) std::rethrow_exception(failure);
 }
 
 }  // namespace caskdem::diagnosis

@@ -459,6 +459,49 @@ TEST_F(MeasuredTestFiles, TooFewRowsIsAnError) {
               AllOf(HasSubstr("tiny.csv"), HasSubstr("found 9 data rows"), HasSubstr("expected at least 10")));
 }
 
+TEST_F(MeasuredTestFiles, AValueNoCaskOnATableCouldShowIsAnError) {
+  // Finite but absurd: a field in other units or corrupt (1e300 would overflow the squares of
+  // the error measures). Row 6 is line 8.
+  const auto columns = replacing(required_columns(), with_fields(column_of("table_acc", table_of), {{6, "1e300"}}));
+  EXPECT_THAT(error_of(write("huge.csv", csv_text(columns, uniform_times(rows, exact_step)))),
+              AllOf(HasSubstr("huge.csv:8:"), HasSubstr("'1e300'"), HasSubstr("table_acc"),
+                    HasSubstr("expected at most 1000 m/s^2")));
+  const auto degrees = replacing(required_columns(), with_fields(column_of("theta", theta_of), {{3, "12.5"}}));
+  EXPECT_THAT(error_of(write("degrees.csv", csv_text(degrees, uniform_times(rows, exact_step)))),
+              AllOf(HasSubstr("degrees.csv:5:"), HasSubstr("'12.5'"), HasSubstr("theta"),
+                    HasSubstr("expected at most 2 pi rad")));
+}
+
+TEST_F(MeasuredTestFiles, ASamplingStepBelowAMicrosecondIsAnError) {
+  EXPECT_THAT(error_of(write("fast.csv", csv_text(required_columns(), uniform_times(rows, 1e-9)))),
+              AllOf(HasSubstr("fast.csv"), HasSubstr("t:"), HasSubstr("median sampling step is 1e-09 s"),
+                    HasSubstr("expected at least 1e-06 s")));
+}
+
+TEST_F(MeasuredTestFiles, AJumpInTimeIsAGapInTheTable) {
+  // Rows 20 on are 1 s late: resampling would invent the table motion across that second.
+  auto times = uniform_times(rows, 0.01);
+  for (std::size_t k = 20; k < rows; ++k) times[k] += 1.0;
+  EXPECT_THAT(error_of(write("jump.csv", csv_text(required_columns(), times))),
+              AllOf(HasSubstr("jump.csv:22:"), HasSubstr("t jumps from 0.19 s (line 21) to 1.2 s"),
+                    HasSubstr("a gap of 1 s"), HasSubstr("expected gaps of at most 0.05 s")));
+  // A late row within the bridged gap is irregular sampling, resampled (as above).
+  times = uniform_times(rows, 0.01);
+  for (std::size_t k = 20; k < rows; ++k) times[k] += 0.04;
+  const auto test = read_measured_test(write("late.csv", csv_text(required_columns(), times)));
+  ASSERT_THAT(test.issues, SizeIs(1));
+  EXPECT_THAT(test.issues[0], HasSubstr("irregular sampling"));
+}
+
+TEST_F(MeasuredTestFiles, NoUsableResponseChannelIsAnError) {
+  const Column dead_theta{"theta", [](std::size_t, double) { return std::string("0.001"); }};
+  const Column empty_slide{"slide", [](std::size_t, double) { return std::string(); }};
+  const auto columns = replacing(replacing(required_columns(), dead_theta), empty_slide);
+  EXPECT_THAT(error_of(write("blind.csv", csv_text(columns, uniform_times(rows, exact_step)))),
+              AllOf(HasSubstr("blind.csv"), HasSubstr("neither theta nor slide has a usable sample"),
+                    HasSubstr("expected at least one response channel")));
+}
+
 TEST_F(MeasuredTestFiles, AnEmptyFileIsAnError) {
   EXPECT_THAT(error_of(write("blank.csv", "# nothing yet\n\n")),
               AllOf(HasSubstr("blank.csv"), HasSubstr("no header row"), HasSubstr("expected a header row")));

@@ -119,6 +119,23 @@ TEST(Measures, ResidualsOfAnIdenticalSimulationVanish) {
   for (std::size_t i = 0; i < r.size(); ++i) EXPECT_NEAR(r[i], 0.0, 1e-12) << measure_names()[i];
 }
 
+TEST(Measures, ADeadChannelsMeasuresAreNotCompared) {
+  // A rotation sensor dead throughout: a simulation that rocks is not wrong by its peak (the
+  // measured one would read as 0), the rotation measures are left out and not counted, and the
+  // sliding measures are compared as usual.
+  MeasuredTest m = measured(sine(kAmplitude), settling_slide(0.01));
+  m.rotation_valid.assign(kSamples, 0);
+  const TestReference reference = reference_of(m, kStability);
+  EXPECT_EQ(compared_count(reference), 3u);
+  const std::vector<double> r = residuals(m, reference, {sine(kAmplitude), settling_slide(0.02), false});
+  for (const char* name : {"peak_rotation", "rotation_asymmetry", "rms_rotation", "rocking_duration", "rocking_rate",
+                           "rotation_history", "rotation_lag"})
+    EXPECT_EQ(r[measure_index(name)], 0.0) << name;
+  EXPECT_GT(r[measure_index("max_sliding")], 1.0);
+  EXPECT_EQ(compared_count(reference_of(measured(sine(kAmplitude), settling_slide(0.01)), kStability)),
+            measure_names().size());
+}
+
 TEST(Measures, IndexByNameAndAnUnknownNameIsRefused) {
   const auto& names = measure_names();
   for (std::size_t i = 0; i < names.size(); ++i) EXPECT_EQ(measure_index(names[i]), i);
