@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace caskdem {
 
@@ -165,12 +166,20 @@ void read_damping(TableReader& root, Case& c) {
   t.reject_unknown_keys();
 }
 
+// Longer than a day is a value in the wrong unit: no test or earthquake lasts that long, and the
+// steps of such a run would overflow their count.
+constexpr double kLongestDuration = 1e5;  // s
+// A synthetic record's sampling: at least 1e-5 s, and from ten samples to 1e8 (800 MB).
+constexpr double kSmallestRecordStep = 1e-5;  // s
+constexpr double kFewestRecordSamples = 10.0;
+constexpr double kMostRecordSamples = 1e8;
+
 void read_integration(TableReader& root, Case& c) {
   if (!root.has_table("integration")) return;
   TableReader t = root.table("integration");
   c.model.safety_factor = t.in_range("safety_factor", t.quantity_or("safety_factor", Dimension::dimensionless, 0.01), 1e-6, 1.0);
-  c.duration = t.non_negative("duration", t.quantity_or("duration", Dimension::time, 0.0));
-  c.settle_time = t.non_negative("settle_time", t.quantity_or("settle_time", Dimension::time, 2.0));
+  c.duration = t.in_range("duration", t.quantity_or("duration", Dimension::time, 0.0), 0.0, kLongestDuration);
+  c.settle_time = t.in_range("settle_time", t.quantity_or("settle_time", Dimension::time, 2.0), 0.0, kLongestDuration);
   t.reject_unknown_keys();
 }
 
@@ -200,21 +209,30 @@ MotionSpec read_motion(TableReader& t) {
     m.cycles = t.positive("cycles", t.quantity("cycles", Dimension::dimensionless));
     m.ramp_cycles = t.non_negative("ramp_cycles", t.quantity_or("ramp_cycles", Dimension::dimensionless, 2.0));
     if (2.0 * m.ramp_cycles > m.cycles) t.fail("ramp_cycles", "the ramps up and down must fit in the cycles");
+    if (m.cycles / m.frequency > kLongestDuration)
+      t.fail("cycles", "expected at most " + number_text(kLongestDuration) + " s of shaking (cycles / frequency), got " +
+                           number_text(m.cycles / m.frequency) + " s");
   } else if (kind == "pulse") {
     m.kind = MotionSpec::Kind::pulse;
     const std::string shape = t.choice("shape", {"half_sine", "one_sine", "rectangular"});
     m.shape = *motion::parse_pulse_shape(shape);
     m.pulse_amplitude = t.quantity("amplitude", Dimension::acceleration);
     if (m.pulse_amplitude == 0.0) t.fail("amplitude", "expected a non-zero acceleration");
-    m.pulse_duration = t.positive("duration", t.quantity("duration", Dimension::time));
+    m.pulse_duration = t.in_range("duration", t.quantity("duration", Dimension::time), 0.0, kLongestDuration);
+    if (m.pulse_duration == 0.0) t.fail("duration", "expected a positive duration");
   } else if (kind == "synthetic") {
     m.kind = MotionSpec::Kind::synthetic;
     motion::SyntheticMotion& s = m.synthetic;
     const std::optional<long> seed = t.optional_integer("seed");
     if (seed && *seed < 0) t.fail("seed", "expected a non-negative whole number");
     s.seed = static_cast<std::uint64_t>(seed.value_or(1));
-    s.duration = t.positive("duration", t.quantity_or("duration", Dimension::time, s.duration));
-    s.time_step = t.positive("time_step", t.quantity_or("time_step", Dimension::time, s.time_step));
+    s.duration = t.in_range("duration", t.quantity_or("duration", Dimension::time, s.duration), 0.0, kLongestDuration);
+    if (s.duration == 0.0) t.fail("duration", "expected a positive duration");
+    s.time_step = t.in_range("time_step", t.quantity_or("time_step", Dimension::time, s.time_step), kSmallestRecordStep,
+                             s.duration / kFewestRecordSamples);
+    if (s.duration / s.time_step > kMostRecordSamples)
+      t.fail("time_step", "expected at most " + number_text(kMostRecordSamples) + " samples (duration / time_step), got " +
+                              number_text(s.duration / s.time_step));
     s.dominant_frequency = t.positive("dominant_frequency", t.quantity_or("dominant_frequency", Dimension::frequency, s.dominant_frequency));
     s.ground_damping = t.positive("ground_damping", t.quantity_or("ground_damping", Dimension::dimensionless, s.ground_damping));
     s.high_pass_frequency = t.positive("high_pass_frequency", t.quantity_or("high_pass_frequency", Dimension::frequency, s.high_pass_frequency));
@@ -246,6 +264,7 @@ MotionSpec read_motion(TableReader& t) {
     } else {
       m.scaling = MotionSpec::Scaling::factor;
       m.scale = t.quantity_or("scale", Dimension::dimensionless, 1.0);
+      if (m.scale == 0.0) t.fail("scale", "expected a non-zero factor (a negative one reverses the record)");
     }
   }
   m.similarity_scale = t.positive("similarity_scale", t.quantity_or("similarity_scale", Dimension::dimensionless, 1.0));
@@ -319,7 +338,7 @@ Case load_case(const std::filesystem::path& file) {
     TableReader t = root.table("free_vibration");
     FreeVibrationSpec& f = c.free_vibration;
     f.initial_tilt_ratio = t.in_range("initial_tilt_ratio", t.quantity_or("initial_tilt_ratio", Dimension::dimensionless, 0.5), 0.01, 0.99);
-    f.duration = t.non_negative("duration", t.quantity_or("duration", Dimension::time, 0.0));
+    f.duration = t.in_range("duration", t.quantity_or("duration", Dimension::time, 0.0), 0.0, kLongestDuration);
     f.ratios = static_cast<int>(t.optional_integer("ratios").value_or(3));
     if (f.ratios < 1 || f.ratios > kPeakCount - 1) t.fail("ratios", "expected 1 to " + std::to_string(kPeakCount - 1));
     if (auto target = t.optional_quantity("target_restitution", Dimension::dimensionless)) {

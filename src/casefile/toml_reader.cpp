@@ -1,4 +1,5 @@
 #include "casefile/toml_reader.h"
+#include "core/text.h"
 
 #include <cmath>
 #include <sstream>
@@ -45,7 +46,7 @@ std::optional<double> TableReader::optional_quantity(std::string_view key, Dimen
   const toml::node* n = node(key);
   if (!n) return std::nullopt;
   if (auto v = n->value<double>(); v && (n->is_floating_point() || n->is_integer())) {
-    if (!std::isfinite(*v)) fail(key, "expected a finite number, got " + std::to_string(*v));
+    if (!std::isfinite(*v)) fail(key, "expected a finite number, got " + number_text(*v));
     return *v;
   }
   if (auto text = n->value<std::string>()) {
@@ -167,19 +168,19 @@ TableReader TableReader::table(std::string_view key) {
 }
 
 double TableReader::positive(std::string_view key, double value) const {
-  if (!(value > 0.0)) fail(key, "expected a positive value, got " + std::to_string(value));
+  if (!(value > 0.0)) fail(key, "expected a positive value, got " + number_text(value));
   return value;
 }
 
 double TableReader::non_negative(std::string_view key, double value) const {
-  if (!(value >= 0.0)) fail(key, "expected a non-negative value, got " + std::to_string(value));
+  if (!(value >= 0.0)) fail(key, "expected a non-negative value, got " + number_text(value));
   return value;
 }
 
 double TableReader::in_range(std::string_view key, double value, double low, double high) const {
   if (!(value >= low && value <= high)) {
-    fail(key, "expected a value between " + std::to_string(low) + " and " + std::to_string(high) + ", got " +
-                  std::to_string(value));
+    fail(key, "expected a value between " + number_text(low) + " and " + number_text(high) + ", got " +
+                  number_text(value));
   }
   return value;
 }

@@ -6,6 +6,7 @@
 
 #include "casefile/case_file.h"
 #include "commands/commands.h"
+#include "commands/validators.h"
 #include "core/error.h"
 #include "sim/case_run.h"
 #include "sim/free_vibration.h"
@@ -23,7 +24,7 @@ void add_calibrate(CLI::App& app) {
   cmd->add_option("case", options->case_file, "Case file (TOML)")->required();
   cmd->add_option("--target", options->target,
                   "Target restitution (default: [free_vibration] target_restitution of the case)")
-      ->check(CLI::Range(0.01, 0.9999));
+      ->check(number_within("a restitution", 0.01, 0.9999));
   cmd->callback([options]() {
     const Case c = load_case(options->case_file);
     const Model model = build_case_model(c);

@@ -16,3 +16,15 @@ void add_diagnose(CLI::App& app);
 void add_evaluate_measured(CLI::App& app);
 
 }  // namespace caskdem::commands
+
+namespace caskdem::diagnosis {
+struct MeasuredSet;
+}
+
+namespace caskdem::commands {
+
+// The imperfections found in the data (gaps, clipping, dead channels, unknown columns), one
+// "data" line each, as every command that reads measured data prints them.
+void print_data_issues(const diagnosis::MeasuredSet& set);
+
+}  // namespace caskdem::commands

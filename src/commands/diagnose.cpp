@@ -9,9 +9,11 @@
 #include <string>
 
 #include "commands/commands.h"
+#include "commands/validators.h"
 #include "core/text.h"
 #include "diagnosis/report.h"
 #include "diagnosis/synthesize.h"
+#include "io/output_paths.h"
 
 namespace caskdem::commands {
 
@@ -24,16 +26,6 @@ diagnosis::DiagnosisOptions options_for(int threads, bool quiet, const std::stri
   if (!quiet) o.log = [](const std::string& line) { std::cerr << "diagnose: " << line << "\n"; };
   return o;
 }
-
-// A noise level: a finite number, zero or more (CLI11's own check prints the largest double).
-const CLI::Validator kNoiseLevel(
-    [](std::string& text) -> std::string {
-      const std::optional<double> value = parse_double(trim(text));
-      if (!value) return "expected a number, got \"" + text + "\"";
-      if (!std::isfinite(*value) || *value < 0.0) return "expected a noise level of zero or more, got " + text;
-      return "";
-    },
-    "NONNEGATIVE");
 
 // --uncertainty: how the standard errors are made (docs/diagnosis-accuracy.md, "Are the uncertainties right?").
 void add_uncertainty_option(CLI::App* cmd, std::string& uncertainty, const std::string& whose) {
@@ -72,19 +64,21 @@ void add_diagnose(CLI::App& app) {
                                        "Fit the baseline model (friction, damping, stiffness scale) to measured tests");
     cmd->add_option("directory", options->directory, "Measured-data directory (specimen.toml and CSV files)")->required();
     cmd->add_option("--out", options->out, "Output directory (default DIRECTORY/calibration)");
-    cmd->add_option("--threads", options->threads, "OpenMP threads")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--threads", options->threads, "OpenMP threads")->check(thread_count());
     cmd->add_flag("--quiet", options->quiet, "No progress lines");
     add_uncertainty_option(cmd, options->uncertainty, "");
     cmd->callback([options]() {
       const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
+      print_data_issues(set);
+      const std::filesystem::path out =
+          options->out.empty() ? std::filesystem::path(options->directory) / "calibration" : std::filesystem::path(options->out);
+      prepare_output_directory(out);
       const diagnosis::ModelFit fit =
           diagnosis::calibrate_baseline(set, options_for(options->threads, options->quiet, options->uncertainty));
       std::cout << "baseline fitted on " << set.training.size() << " tests (" << fit.fit.evaluations
                 << " evaluations in " << fit.fit.populations << " lockstep populations)\n";
       print_fit(fit);
       std::cout << "held-out error  " << fit.heldout_error << " (RMS of scaled residuals)\n";
-      const std::filesystem::path out =
-          options->out.empty() ? std::filesystem::path(options->directory) / "calibration" : std::filesystem::path(options->out);
       diagnosis::write_calibration(out, set, fit);
       std::cout << "wrote           " << (out / "calibration.json").string() << "\n";
     });
@@ -101,15 +95,16 @@ void add_diagnose(CLI::App& app) {
         "diagnose", "What the model gets wrong on measured tests, its most likely physical cause, and the gain");
     cmd->add_option("directory", options->directory, "Measured-data directory (specimen.toml and CSV files)")->required();
     cmd->add_option("--out", options->out, "Output directory (default DIRECTORY/diagnosis)");
-    cmd->add_option("--threads", options->threads, "OpenMP threads")->check(CLI::NonNegativeNumber);
+    cmd->add_option("--threads", options->threads, "OpenMP threads")->check(thread_count());
     cmd->add_flag("--quiet", options->quiet, "No progress lines");
     cmd->add_flag("--no-plot", options->no_plot, "Do not make the PNGs");
     add_uncertainty_option(cmd, options->uncertainty, ", for the baseline and the cause");
     cmd->callback([options]() {
       const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
-      for (const diagnosis::MeasuredTest& t : set.tests) {
-        for (const std::string& issue : t.issues) std::cout << "data            " << issue << "\n";
-      }
+      print_data_issues(set);
+      const std::filesystem::path out =
+          options->out.empty() ? std::filesystem::path(options->directory) / "diagnosis" : std::filesystem::path(options->out);
+      prepare_output_directory(out);
       const diagnosis::Diagnosis d =
           diagnosis::diagnose(set, options_for(options->threads, options->quiet, options->uncertainty));
       std::cout << "cause           " << d.cause << "\n";
@@ -121,8 +116,6 @@ void add_diagnose(CLI::App& app) {
                   << std::setprecision(3) << c.heldout_gain << std::setw(12) << c.bic_delta
                   << (c.significant ? "yes" : "no") << "\n";
       }
-      const std::filesystem::path out =
-          options->out.empty() ? std::filesystem::path(options->directory) / "diagnosis" : std::filesystem::path(options->out);
       diagnosis::write_diagnosis(out, set, d, InstructionSet::automatic, !options->no_plot);
       std::cout << "wall time       " << std::setprecision(4) << d.wall_seconds << " s\n";
       std::cout << "wrote           " << out.string() << "/ (diagnosis.json, report.md"
@@ -140,23 +133,24 @@ void add_diagnose(CLI::App& app) {
         "synthesize-measured", "Write synthetic measured tests of the 1/3 model cask with hidden mechanisms");
     cmd->add_option("--out", options->out, "Directory to write")->required();
     cmd->add_option("--effect", options->effects, "Hidden mechanisms, comma separated (default: none)");
-    cmd->add_option("--seed", options->seed, "Seed of the true values and the noise");
+    cmd->add_option("--seed", options->seed, "Seed of the true values and the noise")->check(seed_number());
     // Each noise can be switched off alone, to see what it does to a diagnosis: with the table's
     // off, the true values reproduce every response channel to its own noise.
     cmd->add_option("--rotation-noise", options->noise.rotation_noise, "Standard deviation of the rotation channel's noise, rad")
-        ->check(kNoiseLevel)
+        ->check(number_within("a rotation noise in rad", 0.0, 0.1))
         ->capture_default_str();
     cmd->add_option("--slide-noise", options->noise.slide_noise, "Standard deviation of the sliding channel's noise, m")
-        ->check(kNoiseLevel)
+        ->check(number_within("a sliding noise in m", 0.0, 0.1))
         ->capture_default_str();
     cmd->add_option("--table-noise", options->noise.table_noise,
                     "Standard deviation of the table channels' noise (horizontal and vertical), m/s^2")
-        ->check(kNoiseLevel)
+        ->check(number_within("a table noise in m/s^2", 0.0, 10.0))
         ->capture_default_str();
     cmd->callback([options]() {
       diagnosis::SyntheticSpec spec = options->noise;
       spec.seed = options->seed;
       spec.hidden = diagnosis::parse_mechanism_list(options->effects, "--effect");
+      prepare_output_directory(options->out);
       const diagnosis::SyntheticTruth truth = diagnosis::write_synthetic_measured_set(options->out, spec);
       std::cout << "wrote           " << options->out << "/ (specimen.toml, test1.csv ... test8.csv, truth.json)\n";
       std::cout << "hidden          " << (truth.hidden.empty() ? std::string("none") : truth.hidden.front());

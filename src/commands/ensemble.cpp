@@ -8,6 +8,7 @@
 #include <iostream>
 
 #include "commands/commands.h"
+#include "commands/validators.h"
 #include "core/error.h"
 #include "core/units.h"
 #include "ensemble/execute.h"
@@ -18,6 +19,8 @@ namespace caskdem {
 class MpiSession;  // ensembles run in one process without MPI
 }
 #endif
+#include "io/hdf5_file.h"
+#include "io/output_paths.h"
 #include "io/run_output.h"
 
 namespace caskdem::commands {
@@ -55,7 +58,7 @@ void run_ensemble_command(const EnsembleOptions& options, const MpiSession* mpi)
 #ifdef CASKDEM_WITH_MPI
   if (mpi) root = mpi->rank() == 0;
 #endif
-  if (root && out.has_parent_path()) std::filesystem::create_directories(out.parent_path());
+  if (root) prepare_output_file(out);
   if (options.resume && !std::filesystem::exists(out)) {
     throw InputError(out.string() + ": no such file to resume (run without --resume first)");
   }
@@ -110,7 +113,7 @@ void add_ensemble(CLI::App& app) {
   cmd->add_option("file", options->file, "Ensemble file (TOML)")->required();
   cmd->add_option("--out", options->out, "Result file (HDF5; default results/<name>.h5)");
   cmd->add_flag("--resume", options->resume, "Continue an interrupted run from its result file");
-  cmd->add_option("--threads", options->threads, "OpenMP threads (default: all cores)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--threads", options->threads, "OpenMP threads (default: all cores)")->check(thread_count());
   cmd->add_option("--isa", options->isa, "Instruction set: automatic, avx512f, avx2, sse2 or scalar");
   cmd->add_flag("--no-plot", options->no_plot, "Do not make the PNG");
   cmd->add_flag("--quiet", options->quiet, "No progress output");
@@ -140,8 +143,19 @@ void add_plot(CLI::App& app) {
   cmd->add_option("file", options->file, "Ensemble result file (HDF5)")->required()->check(CLI::ExistingFile);
   cmd->add_option("--out", options->out, "PNG file (default: beside the result file)");
   cmd->callback([options]() {
+    // What the plotting script reads, checked here: one message instead of a Python traceback.
+    try {
+      const hdf5::Group root = hdf5::open_file(options->file);
+      if (!root.has("realisations") || !root.has("limit_states"))
+        throw InputError(located(options->file, 0, "has no realisations and limit_states groups; expected a result "
+                                                    "file of caskdem ensemble whose run completed"));
+    } catch (const std::runtime_error& e) {
+      if (dynamic_cast<const InputError*>(&e)) throw;
+      throw InputError(located(options->file, 0, std::string(e.what()) + "; expected a result file of caskdem ensemble"));
+    }
     std::filesystem::path png = options->out;
     if (png.empty()) png = std::filesystem::path(options->file).replace_extension(".png");
+    prepare_output_file(png);
     run_plot_script("plot_fragility.py", {options->file, png.string()});
     std::cout << "wrote " << png.string() << "\n";
   });

@@ -20,6 +20,7 @@
 #include <nlohmann/json.hpp>
 
 #include "commands/commands.h"
+#include "commands/validators.h"
 #include "core/error.h"
 #include "core/text.h"
 #include "diagnosis/diagnose.h"
@@ -74,7 +75,7 @@ void take_from_file(const std::filesystem::path& file, const diagnosis::ModelVar
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // a syntax error, or a number beyond a double
     throw InputError(located(file, 0, std::string("not JSON: ") + e.what()));
   }
   // A truth.json of synthesize-measured holds the values the data were made with, each a
@@ -124,6 +125,7 @@ void take_assignment(const std::string& assignment, const diagnosis::ModelVarian
   const std::optional<double> value = parse_double(trim(std::string_view(assignment).substr(equals + 1)));
   if (!value) throw InputError("--at " + assignment + ": expected a number (SI units)");
   check_in_box(parameters[i], *value, "--at " + assignment);
+  if (source[i] == "--at") throw InputError("--at " + assignment + ": " + name + " is given twice; expected each once");
   point[i] = *value;
   source[i] = "--at";
 }
@@ -156,6 +158,12 @@ nlohmann::json evaluation_json(const diagnosis::MeasuredSet& set, const diagnosi
 
 }  // namespace
 
+void print_data_issues(const diagnosis::MeasuredSet& set) {
+  for (const diagnosis::MeasuredTest& t : set.tests) {
+    for (const std::string& issue : t.issues) std::cout << "data            " << issue << "\n";
+  }
+}
+
 void add_evaluate_measured(CLI::App& app) {
   struct Options {
     std::string directory, model = "baseline", from, json;
@@ -172,10 +180,11 @@ void add_evaluate_measured(CLI::App& app) {
   cmd->add_option("--at", options->at, "NAME=VALUE in SI units; repeat or separate with ','")->delimiter(',');
   cmd->add_option("--from", options->from, "Take the model's values from a fit in a diagnosis.json or calibration.json, or from a truth.json of synthesize-measured");
   cmd->add_option("--json", options->json, "Also write the evaluation (per-test residuals) to this JSON file");
-  cmd->add_option("--threads", options->threads, "OpenMP threads")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--threads", options->threads, "OpenMP threads")->check(thread_count());
   cmd->add_flag("--residuals", options->residuals, "Print every test's scaled residual per measure");
   cmd->callback([options]() {
     const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
+    print_data_issues(set);
     const std::vector<diagnosis::Mechanism> mechanisms = diagnosis::parse_mechanism_list(options->model, "--model");
     const diagnosis::ModelVariant variant(set.specimen, mechanisms, set.vertical_measured);
     std::vector<double> point = variant.reference();

@@ -25,7 +25,8 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    return app.exit(e);
+    // --help and --version exit 0; a command line that does not parse is bad input, status 2.
+    return app.exit(e) == 0 ? 0 : 2;
   } catch (const caskdem::InputError& e) {
     std::cerr << "caskdem: error: " << e.what() << "\n";
     return 2;

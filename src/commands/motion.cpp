@@ -1,9 +1,12 @@
 // caskdem motion FILE: read a record and report its intensity after scaling.
 
+#include <cmath>
 #include <iomanip>
 #include <iostream>
 
 #include "commands/commands.h"
+#include "core/text.h"
+#include "commands/validators.h"
 #include "core/error.h"
 #include "core/units.h"
 #include "motion/record.h"
@@ -20,12 +23,18 @@ void add_motion(CLI::App& app) {
   cmd->add_option("file", options->file, "Record file (.AT2 or two-column text/CSV)")->required();
   cmd->add_option("--unit", options->unit, "Acceleration unit of a column file: g, gal or m/s^2");
   cmd->add_option("--format", options->format, "automatic, peer_nga_west2, peer_old or columns");
-  cmd->add_option("--time-step", options->time_step, "Time step of a one-column file, s");
-  auto* scale = cmd->add_option("--scale", options->scale, "Multiply the record by this factor");
-  auto* pga = cmd->add_option("--target-pga", options->target_pga_gal, "Scale to this PGA, gal")->excludes(scale);
-  cmd->add_option("--target-pgv", options->target_pgv_cm_s, "Scale to this PGV, cm/s")->excludes(scale)->excludes(pga);
-  cmd->add_option("--similarity", options->similarity, "Compress time by sqrt(N) for a 1/N model")->check(CLI::PositiveNumber);
-  cmd->callback([options]() {
+  auto* time_step =
+      cmd->add_option("--time-step", options->time_step, "Time step of a one-column file, s")->check(positive_number());
+  auto* scale = cmd->add_option("--scale", options->scale, "Multiply the record by this factor")->check(positive_number());
+  auto* pga = cmd->add_option("--target-pga", options->target_pga_gal, "Scale to this PGA, gal")
+                  ->excludes(scale)
+                  ->check(positive_number());
+  auto* pgv = cmd->add_option("--target-pgv", options->target_pgv_cm_s, "Scale to this PGV, cm/s")
+                  ->excludes(scale)
+                  ->excludes(pga)
+                  ->check(positive_number());
+  cmd->add_option("--similarity", options->similarity, "Compress time by sqrt(N) for a 1/N model")->check(positive_number());
+  cmd->callback([options, time_step, scale, pga, pgv]() {
     motion::ReadOptions read;
     auto format = motion::parse_record_format(options->format);
     if (!format) throw InputError("--format: expected automatic, peer_nga_west2, peer_old or columns");
@@ -34,13 +43,17 @@ void add_motion(CLI::App& app) {
       read.unit = motion::parse_acceleration_unit(options->unit);
       if (!read.unit) throw InputError("--unit: expected g, gal or m/s^2, got \"" + options->unit + "\"");
     }
-    if (options->time_step > 0.0) read.time_step = options->time_step;
+    if (time_step->count() > 0) read.time_step = options->time_step;
     motion::Record record = motion::read_record(options->file, read);
-    if (options->scale != 0.0) record = motion::scaled(record, options->scale);
-    if (options->target_pga_gal > 0.0) record = motion::scaled_to_pga(record, units::gal_to_si(options->target_pga_gal));
-    if (options->target_pgv_cm_s > 0.0) record = motion::scaled_to_pgv(record, options->target_pgv_cm_s * 0.01);
+    if ((pga->count() > 0 || pgv->count() > 0) && motion::peak_ground_acceleration(record) == 0.0)
+      throw InputError(options->file + ": every acceleration is zero; expected a record with motion to scale to a target");
+    if (scale->count() > 0) record = motion::scaled(record, options->scale);
+    if (pga->count() > 0) record = motion::scaled_to_pga(record, units::gal_to_si(options->target_pga_gal));
+    if (pgv->count() > 0) record = motion::scaled_to_pgv(record, options->target_pgv_cm_s * units::kine);
     if (options->similarity != 1.0) record = motion::time_scaled(record, 1.0 / std::sqrt(options->similarity));
     const double pga = motion::peak_ground_acceleration(record);
+    if (!std::isfinite(pga))
+      throw InputError("--scale " + number_text(options->scale) + ": the scaled accelerations overflow; expected a smaller factor");
     const double pgv = motion::peak_ground_velocity(record);
     std::cout << std::setprecision(5);
     std::cout << "record     " << record.source << "\n";

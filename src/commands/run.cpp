@@ -6,6 +6,7 @@
 #include "casefile/case_file.h"
 #include "commands/commands.h"
 #include "core/error.h"
+#include "io/output_paths.h"
 #include "io/run_output.h"
 #include "sim/case_run.h"
 
@@ -35,9 +36,9 @@ void add_run(CLI::App& app) {
     }
     const std::filesystem::path directory =
         options->out.empty() ? c.output.directory : std::filesystem::path(options->out);
+    prepare_output_directory(directory);
     const RunReport report = run_case(c, c.output.interval);
     print_summary(std::cout, report);
-    std::filesystem::create_directories(directory);
     write_summary_json(directory / "summary.json", report);
     if (c.output.csv) write_history_csv(directory / "history.csv", report);
     if (c.output.hdf5 || (c.output.plot && !options->no_plot)) write_run_hdf5(directory / "run.h5", report);

@@ -7,12 +7,17 @@
 #include <fstream>
 #include <iomanip>
 #include <iostream>
+#include <optional>
 #include <sstream>
 
 #include "casefile/case_file.h"
 #include "commands/commands.h"
+#include "commands/validators.h"
+#include "commands/validators.h"
 #include "core/error.h"
+#include "core/text.h"
 #include "core/units.h"
+#include "io/output_paths.h"
 #include "io/run_output.h"
 #include "sim/case_run.h"
 #include "sim/free_vibration.h"
@@ -28,20 +33,23 @@ struct SweepPoint {
   bool dem_tipped = false, theory_tipped = false;
 };
 
+// Finite positive numbers separated by commas.
 std::vector<double> parse_list(const std::string& text, const std::string& option) {
   std::vector<double> values;
   std::stringstream in(text);
   std::string item;
   while (std::getline(in, item, ',')) {
-    try {
-      values.push_back(std::stod(item));
-    } catch (const std::exception&) {
-      throw InputError(option + ": expected numbers separated by commas, got \"" + text + "\"");
-    }
+    const std::optional<double> value = parse_double(trim(item));
+    if (!value || !std::isfinite(*value) || !(*value > 0.0))
+      throw InputError(option + ": expected finite numbers above zero separated by commas, got \"" + text + "\"");
+    values.push_back(*value);
   }
   if (values.empty()) throw InputError(option + ": expected at least one number");
   return values;
 }
+
+// More frequencies than this is a step typed in the wrong unit (a sweep runs each amplitude at each).
+constexpr double kMostFrequencies = 10000;
 
 }  // namespace
 
@@ -58,16 +66,20 @@ void add_sweep(CLI::App& app) {
   cmd->add_option("case", options->case_file, "Case file (TOML): cask, contact, friction, damping")->required();
   cmd->add_option("--amplitudes", options->amplitudes, "Displacement amplitudes, cm (comma separated)");
   cmd->add_option("--frequencies", options->frequencies, "first,last,step in Hz");
-  cmd->add_option("--cycles", options->cycles, "Cycles per test")->check(CLI::PositiveNumber);
-  cmd->add_option("--ramp-cycles", options->ramp_cycles, "Cycles of ramp up and down")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--cycles", options->cycles, "Cycles per test")->check(positive_number());
+  cmd->add_option("--ramp-cycles", options->ramp_cycles, "Cycles of ramp up and down")->check(non_negative_number());
   cmd->add_option("--out", options->out, "Output directory (default results/<case>-sweep)");
   cmd->callback([options]() {
     const Case base = load_case(options->case_file);
     const std::vector<double> amplitudes = parse_list(options->amplitudes, "--amplitudes");
     const std::vector<double> range = parse_list(options->frequencies, "--frequencies");
-    if (range.size() != 3 || !(range[0] > 0.0) || !(range[1] >= range[0]) || !(range[2] > 0.0)) {
-      throw InputError("--frequencies: expected first,last,step with 0 < first <= last and step > 0");
+    if (range.size() != 3 || !(range[1] >= range[0]) || (range[1] - range[0]) / range[2] > kMostFrequencies) {
+      throw InputError("--frequencies: expected first,last,step with 0 < first <= last, step > 0 and at most " +
+                       number_text(kMostFrequencies) + " frequencies, got \"" + options->frequencies + "\"");
     }
+    const std::filesystem::path directory =
+        options->out.empty() ? std::filesystem::path("results") / (base.name + "-sweep") : std::filesystem::path(options->out);
+    prepare_output_directory(directory);
     std::vector<double> frequencies;
     for (double f = range[0]; f <= range[1] * (1.0 + 1e-12); f += range[2]) frequencies.push_back(f);
     const Model model = build_case_model(base);
@@ -100,9 +112,6 @@ void add_sweep(CLI::App& app) {
       p.theory_tipped = response.tipped_over;
     }
 
-    const std::filesystem::path directory =
-        options->out.empty() ? std::filesystem::path("results") / (base.name + "-sweep") : std::filesystem::path(options->out);
-    std::filesystem::create_directories(directory);
     std::ofstream csv(directory / "sweep.csv");
     csv << "# caskdem sweep of " << base.file.string() << "; DEM alpha " << model.stability_angle
         << " rad, theory alpha " << block.slenderness() << " rad, restitution " << fv.restitution << "\n";

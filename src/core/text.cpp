@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <charconv>
+#include <cstdlib>
+#include <sstream>
 #include <fstream>
 #include <iterator>
 #include <limits>
@@ -54,9 +56,17 @@ std::optional<double> parse_double(std::string_view token) {
   const char* last = token.data() + token.size();
   const auto [end, error] = std::from_chars(token.data(), last, value);
   if (end != last) return std::nullopt;
-  if (error == std::errc::result_out_of_range) return std::numeric_limits<double>::infinity();
+  // Beyond a double's range: strtod says which way (+-infinity on overflow, 0 on underflow).
+  if (error == std::errc::result_out_of_range) return std::strtod(std::string(token).c_str(), nullptr);
   if (error != std::errc()) return std::nullopt;
   return value;
+}
+
+std::string number_text(double x) {
+  std::ostringstream out;
+  out.precision(6);
+  out << x;
+  return out.str();
 }
 
 }  // namespace caskdem

@@ -19,7 +19,11 @@ std::string_view trim(std::string_view s);
 std::vector<std::string> read_text_lines(const std::filesystem::path& file, const std::string& expected);
 
 // The whole token as a double, a leading '+' allowed; a value beyond the range of a double is
-// infinity and "nan"/"inf" parse (callers reject what is not finite); nullopt otherwise.
+// infinity (one below it 0) and "nan"/"inf" parse (callers reject what is not finite); nullopt otherwise.
 std::optional<double> parse_double(std::string_view token);
+
+// A number for a message: six significant digits, as %g (1e-09, 0.35, 2.38e+07), so that a
+// small or large value is not printed as 0.000000 or as 309 digits.
+std::string number_text(double x);
 
 }  // namespace caskdem

@@ -1,4 +1,5 @@
 #include "diagnosis/measured_set.h"
+#include "core/text.h"
 
 #include <algorithm>
 #include <string>
@@ -15,7 +16,7 @@ namespace {
 int whole_number_in(TableReader& t, std::string_view key, int fallback, int low, int high, const std::string& what) {
   const long value = t.optional_integer(key).value_or(fallback);
   if (value < low || value > high) {
-    t.fail(key, "expected " + std::to_string(low) + " to " + std::to_string(high) + " " + what);
+    t.fail(key, "expected " + number_text(low) + " to " + number_text(high) + " " + what);
   }
   return static_cast<int>(value);
 }
@@ -41,10 +42,14 @@ Case read_specimen(const std::filesystem::path& specimen, DiagnosisSettings* set
     if (t.has("heldout")) {
       const toml::array* list = document["diagnosis"]["heldout"].as_array();
       t.accept("heldout");
-      if (!list) t.fail("heldout", "expected a list of test names such as [\"test5\", \"test6\"]");
+      if (!list || list->empty())
+        t.fail("heldout", "expected a list of test names such as [\"test5\", \"test6\"] (leave the key out for the "
+                          "default, every third test from the second)");
       for (const toml::node& n : *list) {
         auto name = n.value<std::string>();
         if (!name) t.fail("heldout", "expected test names in quotes");
+        if (std::find(s.heldout.begin(), s.heldout.end(), *name) != s.heldout.end())
+          t.fail("heldout", "the test \"" + *name + "\" is named twice; expected each test once");
         s.heldout.push_back(*name);
       }
     }

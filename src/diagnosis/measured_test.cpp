@@ -99,13 +99,6 @@ std::string lower(std::string_view s) {
   return out;
 }
 
-std::string number_text(double x) {
-  std::ostringstream out;
-  out.precision(6);
-  out << x;
-  return out.str();
-}
-
 // Built by appending: "'" + std::string(s) trips a false -Wrestrict in GCC 12.
 std::string in_quotes(std::string_view s) {
   std::string out(1, '\'');

@@ -47,13 +47,17 @@ std::vector<Mechanism> parse_mechanism_list(const std::string& text, const std::
   std::string name;
   while (std::getline(list, name, ',')) {
     name = std::string(trim(name));
-    if (name.empty() || name == "baseline") continue;
+    // "none" is the cause's word for the baseline alone.
+    if (name.empty() || name == "baseline" || name == "none") continue;
     const auto m = parse_mechanism(name);
     if (!m) {
       std::string known;
       for (Mechanism k : all_mechanisms()) known.append(" ").append(mechanism_name(k));
-      throw InputError(where + ": unknown mechanism \"" + name + "\"; expected baseline or one or more of:" + known);
+      throw InputError(where + ": unknown mechanism \"" + name + "\"; expected baseline (or none) or one or more of:" +
+                       known);
     }
+    if (std::find(mechanisms.begin(), mechanisms.end(), *m) != mechanisms.end())
+      throw InputError(where + ": the mechanism " + name + " is named twice; expected each once");
     mechanisms.push_back(*m);
   }
   return mechanisms;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <sstream>
 
 #include <boost/math/distributions/normal.hpp>
@@ -38,6 +39,17 @@ double Distribution::quantile(double u) const {
     }
   }
   return first;
+}
+
+double Distribution::truncation_mass() const {
+  if (kind != Kind::normal && kind != Kind::lognormal) return 1.0;
+  const bool logarithmic = kind == Kind::lognormal;
+  const boost::math::normal_distribution<double> normal(logarithmic ? std::log(first) : first, second);
+  const double lower = logarithmic ? (low > 0.0 ? std::log(low) : -std::numeric_limits<double>::infinity()) : low;
+  const double upper = logarithmic ? std::log(high) : high;
+  const double below_high = std::isfinite(upper) ? boost::math::cdf(normal, upper) : 1.0;
+  const double below_low = std::isfinite(lower) ? boost::math::cdf(normal, lower) : 0.0;
+  return below_high - below_low;
 }
 
 double Distribution::lowest() const {

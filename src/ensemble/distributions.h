@@ -21,6 +21,7 @@ struct Distribution {
   double high = std::numeric_limits<double>::infinity();
 
   double quantile(double u) const;  // u in (0, 1)
+  double truncation_mass() const;   // probability of [low, high] under the untruncated normal or lognormal; else 1
   double lowest() const;            // smallest value the distribution can give
   double highest() const;
   std::string describe() const;

@@ -1,10 +1,12 @@
 #include "ensemble/ensemble_file.h"
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <sstream>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace caskdem {
 
@@ -16,6 +18,14 @@ Dimension dimension_of(const std::string& parameter) {
   if (parameter == "centre_height") return Dimension::length;
   return Dimension::dimensionless;
 }
+
+// A lognormal spread wider than a factor e^3 = 20 per standard deviation is not a parameter's
+// uncertainty (and its far draws overflow).
+constexpr double kLargestLogStd = 3.0;
+// Truncation bounds that hold less of the distribution than this leave it degenerate.
+constexpr double kSmallestTruncationMass = 1e-6;
+// The results of one run are held in memory: 1e8 realisations take about 16 GB.
+constexpr long kMostRealisations = 100'000'000;
 
 Distribution read_distribution(TableReader& t, const std::string& parameter) {
   const Dimension dimension = dimension_of(parameter);
@@ -41,12 +51,17 @@ Distribution read_distribution(TableReader& t, const std::string& parameter) {
   } else {
     d.kind = Distribution::Kind::lognormal;
     d.first = t.positive("median", finite("median"));
-    d.second = t.positive("log_std", t.quantity("log_std", Dimension::dimensionless));
+    d.second = t.in_range("log_std", t.quantity("log_std", Dimension::dimensionless), 0.0, kLargestLogStd);
+    if (d.second == 0.0) t.fail("log_std", "expected a positive value (a constant is distribution = \"constant\")");
   }
   if (kind == "normal" || kind == "lognormal") {
     if (auto low = t.optional_quantity("low", dimension)) d.low = *low;
     if (auto high = t.optional_quantity("high", dimension)) d.high = *high;
     if (!(d.high > d.low)) t.fail("high", "expected high > low");
+    // Bounds far out in a tail would put every sample on a bound.
+    if (d.truncation_mass() < kSmallestTruncationMass)
+      t.fail("low", "the bounds [low, high] hold a probability of " + number_text(d.truncation_mass()) +
+                        " of the distribution; expected bounds around its centre");
   }
   // Physical ranges: coefficients and masses cannot be negative; restitution lies in (0, 1).
   const double lowest = d.lowest(), highest = d.highest();
@@ -153,6 +168,15 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
     if (e.uncertain.count("friction_decay_speed") && law != FrictionLaw::exponential) {
       t.fail("friction_decay_speed", "only the exponential friction law has a decay speed");
     }
+    if (auto centre = e.uncertain.find("centre_height"); centre != e.uncertain.end()) {
+      double top = 0.0;
+      for (const Point& p : c.model.section.outline) top = std::max(top, p.y);
+      if (!(centre->second.lowest() > 0.0 && centre->second.highest() < top))
+        t.fail("centre_height", "the centre of mass must lie inside the cask, 0 to " + number_text(top) +
+                                    " m above its base; the distribution spans " +
+                                    number_text(centre->second.lowest()) + " to " +
+                                    number_text(centre->second.highest()) + " m (bound it with low and high)");
+    }
     if (e.uncertain.count("friction_static") && law == FrictionLaw::tabulated) {
       t.fail("friction_static", "a tabulated friction law cannot vary its coefficient");
     }
@@ -186,7 +210,11 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
       e.levels.push_back(*level);
     }
     const long count = t.integer("realisations");
-    if (count < 1) t.fail("realisations", "expected at least 1 realisation per stripe");
+    if (count < 1 || count > kMostRealisations)
+      t.fail("realisations", "expected at least 1 and at most " + std::to_string(kMostRealisations) + " realisations per stripe");
+    if (static_cast<double>(count) * static_cast<double>(e.levels.size()) > double(kMostRealisations))
+      t.fail("realisations", "expected at most " + std::to_string(kMostRealisations) + " realisations in all (" +
+                                 std::to_string(e.levels.size()) + " stripes of " + std::to_string(count) + ")");
     e.realisations_per_stripe = count;
     t.reject_unknown_keys();
   }

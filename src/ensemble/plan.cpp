@@ -1,4 +1,5 @@
 #include "ensemble/plan.h"
+#include "core/text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -55,8 +56,8 @@ CalibrationCurve monotone(const CalibrationCurve& measured) {
 
 double CalibrationCurve::damping_for(double e) const {
   if (!(e <= highest() && e >= lowest())) {
-    throw std::out_of_range("restitution " + std::to_string(e) + " is outside the calibrated range [" +
-                            std::to_string(lowest()) + ", " + std::to_string(highest()) + "]");
+    throw std::out_of_range("restitution " + number_text(e) + " is outside the calibrated range [" +
+                            number_text(lowest()) + ", " + number_text(highest()) + "]");
   }
   // restitution falls with damping: find the interval and interpolate in ln h.
   std::size_t k = 1;
@@ -95,7 +96,7 @@ CalibrationCurve compute_calibration_curve(const Model& model, const ModelSpec& 
     const std::vector<double> peaks(response.peak, response.peak + std::min<int>(kPeakCount, int(response.impacts)));
     const double e = restitution_from_peaks(peaks, free_vibration.ratios);
     if (!(e > 0.0)) {
-      throw std::runtime_error("free vibration at damping ratio " + std::to_string(curve.damping_ratio[l]) +
+      throw std::runtime_error("free vibration at damping ratio " + number_text(curve.damping_ratio[l]) +
                                " rocked too few half-cycles to measure a restitution");
     }
     curve.restitution.push_back(e);
@@ -142,9 +143,9 @@ EnsemblePlan::EnsemblePlan(const EnsembleSpec& spec, InstructionSet isa)
     const Distribution& d = spec_.uncertain.at("restitution");
     if (d.lowest() < calibration_.lowest() || d.highest() > calibration_.highest()) {
       fail("key uncertain.restitution: this cask's free vibration reaches restitutions " +
-           std::to_string(calibration_.lowest()) + " to " + std::to_string(calibration_.highest()) +
-           " (rigid-impact limit to undamped springs); the distribution spans " + std::to_string(d.lowest()) + " to " +
-           std::to_string(d.highest()));
+           number_text(calibration_.lowest()) + " to " + number_text(calibration_.highest()) +
+           " (rigid-impact limit to undamped springs); the distribution spans " + number_text(d.lowest()) + " to " +
+           number_text(d.highest()));
     }
   }
 }

@@ -1,4 +1,5 @@
 #include "model/build.h"
+#include "core/text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -171,8 +172,8 @@ Model build_model(const ModelSpec& spec, const RealisationParameters& nominal) {
   // below it are the cask swaying on its springs, not rocking.
   m.rocking_threshold_angle = 2.0 * facts.static_penetration / facts.half_span;
   if (m.time_step > facts.stable_time_step) {
-    throw std::invalid_argument("the time step " + std::to_string(m.time_step) + " s exceeds the stability limit " +
-                                std::to_string(facts.stable_time_step) + " s of the contact springs; lower the safety factor");
+    throw std::invalid_argument("the time step " + number_text(m.time_step) + " s exceeds the stability limit " +
+                                number_text(facts.stable_time_step) + " s of the contact springs; lower the safety factor");
   }
   return m;
 }

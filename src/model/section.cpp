@@ -1,4 +1,5 @@
 #include "model/section.h"
+#include "core/text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -22,7 +23,7 @@ Point inward_normal(Point a, Point b) {
   return {-d.y / l, d.x / l};
 }
 
-std::string format_point(Point p) { return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ")"; }
+std::string format_point(Point p) { return "(" + number_text(p.x) + ", " + number_text(p.y) + ")"; }
 
 void require_convex_counter_clockwise(const std::vector<Point>& v) {
   const std::size_t n = v.size();
@@ -145,7 +146,7 @@ std::vector<Point> rounded_corner_centres(const Section& section) {
     const Point original = minus(v[(i + 1) % n], v[i]);
     const Point offset = minus(centres[(i + 1) % n], centres[i]);
     if (original.x * offset.x + original.y * offset.y <= 0.0) {
-      throw std::invalid_argument("the rounding radius " + std::to_string(section.rounding) +
+      throw std::invalid_argument("the rounding radius " + number_text(section.rounding) +
                                   " m is too large for the edge from " + format_point(v[i]) + " to " +
                                   format_point(v[(i + 1) % n]));
     }

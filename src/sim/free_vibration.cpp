@@ -1,4 +1,5 @@
 #include "sim/free_vibration.h"
+#include "core/text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -93,7 +94,7 @@ CalibrationResult calibrate_damping(const Case& c, double target) {
     ++result.evaluations;
     const FreeVibrationResult fv = free_vibration(model, p, c.free_vibration);
     if (!fv.enough_impacts) {
-      throw InputError(located(c.file, 0, "free vibration at damping ratio " + std::to_string(damping_ratio) +
+      throw InputError(located(c.file, 0, "free vibration at damping ratio " + number_text(damping_ratio) +
                                               " rocked fewer than " + std::to_string(c.free_vibration.ratios + 1) +
                                               " half-cycles; raise [free_vibration] duration"));
     }
@@ -103,10 +104,10 @@ CalibrationResult calibrate_damping(const Case& c, double target) {
   result.lowest_restitution = restitution_at(result.largest_damping);
   if (!(target <= result.highest_restitution && target >= result.lowest_restitution)) {
     throw InputError(located(c.file, 0,
-                             "target restitution " + std::to_string(target) + " is out of reach of this model: damping ratios " +
-                                 std::to_string(result.smallest_damping) + " to " + std::to_string(result.largest_damping) +
-                                 " give " + std::to_string(result.lowest_restitution) + " to " +
-                                 std::to_string(result.highest_restitution) +
+                             "target restitution " + number_text(target) + " is out of reach of this model: damping ratios " +
+                                 number_text(result.smallest_damping) + " to " + number_text(result.largest_damping) +
+                                 " give " + number_text(result.lowest_restitution) + " to " +
+                                 number_text(result.highest_restitution) +
                                  " (the rigid-impact limit below, the undamped springs above)"));
   }
   // e(h) falls monotonically; solve e(exp(x)) = target for x = log h.

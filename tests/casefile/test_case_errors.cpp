@@ -102,6 +102,32 @@ TEST_F(CaseErrors, GeometryProblemNamesTheTable) {
   EXPECT_THAT(e, HasSubstr("rounding"));
 }
 
+TEST_F(CaseErrors, ADurationInTheWrongUnitIsRefused) {
+  // 1e30 s of steps overflowed their count: a negative step count and end time, exit 0.
+  const auto file = variant("long", "safety_factor = 0.01", "safety_factor = 0.01\nduration = \"1e30 s\"");
+  const std::string e = error_of(file);
+  EXPECT_THAT(e, HasSubstr(":" + std::to_string(line_of(file, "duration = ")) + ": key integration.duration"));
+  EXPECT_THAT(e, HasSubstr("expected a value between 0 and 100000, got 1e+30"));
+}
+
+TEST_F(CaseErrors, MessagesShowSmallValuesAsGiven) {
+  // Printed with %f, 1e-9 read "got 0.000000".
+  const auto file = variant("tiny-step", "safety_factor = 0.01", "safety_factor = 1e-9");
+  EXPECT_THAT(error_of(file), HasSubstr("key integration.safety_factor: expected a value between 1e-06 and 1, got 1e-09"));
+}
+
+TEST_F(CaseErrors, ShakingLongerThanADayIsRefused) {
+  const auto file = variant("cycles", "cycles = 10", "cycles = 1e15");
+  EXPECT_THAT(error_of(file), HasSubstr("key motion.cycles: expected at most 100000 s of shaking"));
+}
+
+TEST_F(CaseErrors, ARecordScaledByZeroIsRefused) {
+  // A factor of 0 ran a motionless case. Checked when the case is read, before the record.
+  const auto file = variant_of(testing::case_path("model-1-3-elcentro-400gal.toml"), "still-record.toml",
+                               "target_pga = \"400 gal\"", "scale = 0");
+  EXPECT_THAT(error_of(file), HasSubstr("key motion.scale: expected a non-zero factor"));
+}
+
 TEST_F(CaseErrors, MissingRequiredKey) {
   const auto file = variant("missing", "diameter = \"0.95 m\"\n", "");
   EXPECT_THAT(error_of(file), HasSubstr("missing key cask.diameter: expected a length"));

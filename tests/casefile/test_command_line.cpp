@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -71,6 +72,62 @@ TEST_F(CommandLine, NoNanInResultFiles) {
     EXPECT_EQ(text.find("nan"), std::string::npos) << name;
     EXPECT_EQ(text.find("inf"), std::string::npos) << name;
   }
+}
+
+// A command line that does not parse is bad input too: status 2, one message naming the
+// option and what it expects (CLI11's own statuses are 100 and up).
+TEST_F(CommandLine, BadOptionValuesExitTwoNamingTheOption) {
+  struct Case {
+    std::string arguments, message;
+  };
+  const std::string out = (dir_ / "never").string();
+  for (const Case& c : std::vector<Case>{
+           // libgomp crashed creating 100000 threads.
+           {"ensemble none.toml --threads 100000", "--threads: expected a whole number of threads from 0 (all cores) to 1024"},
+           {"ensemble none.toml --threads abc", "--threads: expected a whole number of threads"},
+           // CLI11 wrapped -3 to 2^64 - 3.
+           {"synthesize-measured --out " + out + " --seed -3", "--seed: expected a seed, a whole number"},
+           {"synthesize-measured --out " + out + " --table-noise 1e300", "--table-noise: expected a table noise"},
+           // Ignored before: the record was printed unscaled.
+           {"motion none.csv --scale -1", "--scale: expected a finite number above zero"},
+           {"motion none.csv --target-pga nan", "--target-pga: expected a finite number above zero"},
+           {"calibrate none.toml --target nan", "--target: expected a restitution from 0.01 to 0.9999"},
+           {"similarity 0", "scale: expected a finite number above zero, got \"0\""},
+           {"run", "case is required"},
+       }) {
+    const Outcome o = run_caskdem(c.arguments);
+    EXPECT_EQ(o.status, 2) << c.arguments << "\n" << o.output;
+    EXPECT_THAT(o.output, HasSubstr(c.message)) << c.arguments;
+    EXPECT_FALSE(std::filesystem::exists(out)) << c.arguments;
+  }
+  EXPECT_EQ(run_caskdem("--help").status, 0);
+}
+
+// Where results cannot go is said before the work, not after it as a filesystem error.
+TEST_F(CommandLine, AnUnusableOutputPathIsRefusedFirst) {
+  const auto file = write("taken", "a file, not a directory\n");
+  const Outcome run = run_caskdem("run " + testing::case_path("default-pulse.toml") + " --out " + file.string());
+  EXPECT_EQ(run.status, 2);
+  EXPECT_THAT(run.output, HasSubstr(file.string() + ": is a file; expected a directory for the results"));
+  EXPECT_THAT(run.output, ::testing::Not(HasSubstr("max |theta|"))) << "refused before running";
+
+  const Outcome synthesize = run_caskdem("synthesize-measured --out " + file.string());
+  EXPECT_EQ(synthesize.status, 2);
+  EXPECT_THAT(synthesize.output, HasSubstr("is a file"));
+
+  const Outcome ensemble = run_caskdem("ensemble " + std::string(CASKDEM_SOURCE_DIR) +
+                                       "/tests/ensemble/data/mixed-outcomes.toml --out " + dir_.string());
+  EXPECT_EQ(ensemble.status, 2);
+  EXPECT_THAT(ensemble.output, HasSubstr(dir_.string() + ": is a directory; expected a file name for the results"));
+}
+
+TEST_F(CommandLine, PlottingAFileThatIsNotAnEnsembleResultSaysSo) {
+  const auto text = write("notes.h5", "not HDF5\n");
+  const Outcome o = run_caskdem("plot " + text.string());
+  EXPECT_EQ(o.status, 2);
+  EXPECT_THAT(o.output, HasSubstr("notes.h5"));
+  EXPECT_THAT(o.output, HasSubstr("expected a result file of caskdem ensemble"));
+  EXPECT_THAT(o.output, ::testing::Not(HasSubstr("Traceback")));
 }
 
 }  // namespace

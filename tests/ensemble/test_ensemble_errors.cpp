@@ -67,6 +67,36 @@ TEST_F(EnsembleErrors, ZeroRealisations) {
   EXPECT_THAT(error_of(file), HasSubstr("key intensity.realisations: expected at least 1"));
 }
 
+TEST_F(EnsembleErrors, MoreRealisationsThanMemoryHolds) {
+  const auto file = variant("billions", "realisations = 64", "realisations = 3000000000");
+  EXPECT_THAT(error_of(file), HasSubstr("key intensity.realisations: expected at least 1 and at most 100000000"));
+}
+
+TEST_F(EnsembleErrors, LognormalSpreadBeyondAFactorOfTwenty) {
+  // exp(500 z) overflows: once a late "decay speed must be positive" with no key.
+  const auto file = variant("wide", "log_std = 0.5", "log_std = 500");
+  EXPECT_THAT(error_of(file), HasSubstr("key uncertain.friction_decay_speed.log_std: expected a value between 0 and 3"));
+}
+
+TEST_F(EnsembleErrors, TruncationBoundsFarInATail) {
+  // A normal 0.5 +- 0.001 cut to [0.94, 0.97] holds no probability; every draw was 0.94.
+  const auto file = variant("tail", "distribution = \"uniform\"\nlow = 0.94\nhigh = 0.97",
+                            "distribution = \"normal\"\nmean = 0.5\nstd = 0.001\nlow = 0.94\nhigh = 0.97");
+  const std::string e = error_of(file);
+  EXPECT_THAT(e, HasSubstr("key uncertain.restitution.low"));
+  EXPECT_THAT(e, HasSubstr("hold a probability of 0"));
+}
+
+TEST_F(EnsembleErrors, CentreOfMassOutsideTheCask) {
+  const auto file = variant("tall", "[intensity]",
+                            "[uncertain.centre_height]\ndistribution = \"uniform\"\nlow = \"100 m\"\nhigh = \"200 m\"\n\n"
+                            "[intensity]");
+  const std::string e = error_of(file);
+  EXPECT_THAT(e, HasSubstr("key uncertain.centre_height"));
+  EXPECT_THAT(e, HasSubstr("must lie inside the cask"));
+  EXPECT_THAT(e, HasSubstr("spans 100 to 200 m"));
+}
+
 TEST_F(EnsembleErrors, MissingRecord) {
   const auto file = variant("missing-record",
                             "kind = \"sine\"\namplitude = \"1 cm\"\nfrequency = \"1.2 Hz\"\ncycles = 3\nramp_cycles = 0.5",
