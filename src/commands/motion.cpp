@@ -5,9 +5,9 @@
 #include <iostream>
 
 #include "commands/commands.h"
-#include "core/text.h"
 #include "commands/validators.h"
 #include "core/error.h"
+#include "core/text.h"
 #include "core/units.h"
 #include "motion/record.h"
 

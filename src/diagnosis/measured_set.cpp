@@ -1,11 +1,11 @@
 #include "diagnosis/measured_set.h"
-#include "core/text.h"
 
 #include <algorithm>
 #include <string>
 #include <string_view>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace caskdem::diagnosis {
 

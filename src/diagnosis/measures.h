@@ -90,7 +90,8 @@ Features features_of(const std::vector<double>& time, const std::vector<double>&
 // `delay`, so the sample at t shows the response at t - delay.
 SimulatedHistory delayed(const SimulatedHistory& history, const std::vector<double>& time, double delay);
 
-// Scaled residuals, one per measure (simulated minus measured, over the tolerance).
+// Scaled residuals, one per measure (simulated minus measured, over the tolerance; 0 for a
+// measure that is not compared).
 std::vector<double> residuals(const MeasuredTest& test, const TestReference& reference, const SimulatedHistory& simulated);
 
 // The fits' loss: pseudo-Huber on the scaled residuals, sum 2 d^2 (sqrt(1 + (r/d)^2) - 1), d = 3

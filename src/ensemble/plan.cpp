@@ -1,11 +1,11 @@
 #include "ensemble/plan.h"
-#include "core/text.h"
 
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "kernels/step.h"
 #include "sim/free_vibration.h"
 #include "sim/rigid_equivalent.h"

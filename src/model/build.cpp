@@ -1,5 +1,4 @@
 #include "model/build.h"
-#include "core/text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,6 +6,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/text.h"
 #include "kernels/portable_math.h"
 
 namespace caskdem {

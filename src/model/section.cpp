@@ -1,5 +1,4 @@
 #include "model/section.h"
-#include "core/text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -7,6 +6,8 @@
 #include <numbers>
 #include <stdexcept>
 #include <string>
+
+#include "core/text.h"
 
 namespace caskdem {
 

@@ -1,5 +1,4 @@
 #include "sim/free_vibration.h"
-#include "core/text.h"
 
 #include <algorithm>
 #include <cmath>
@@ -8,6 +7,7 @@
 #include <boost/math/tools/roots.hpp>
 
 #include "core/error.h"
+#include "core/text.h"
 #include "sim/simulate.h"
 
 namespace caskdem {
