@@ -208,7 +208,7 @@ TEST(SynthesizeMeasuredCommand, TakesEachNoiseLevelAndRefusesANegativeOne) {
   EXPECT_THAT(text, ContainsRegex("\"table_m_s2\": 0\\.0"));
   const Outcome bad = run_caskdem("synthesize-measured --out " + directory + " --table-noise -1");
   EXPECT_NE(bad.status, 0);
-  EXPECT_THAT(bad.output, HasSubstr("--table-noise: expected a noise level of zero or more, got -1"));
+  EXPECT_THAT(bad.output, HasSubstr("--table-noise: expected a table noise in m/s^2 from 0 to 10, got \"-1\""));
 }
 
 TEST(EvaluateMeasuredCommand, TakesAFitFromAFileAndNamesAFileWithoutIt) {
