@@ -174,6 +174,12 @@ constexpr double kSmallestRecordStep = 1e-5;  // s
 constexpr double kFewestRecordSamples = 10.0;
 constexpr double kMostRecordSamples = 1e8;
 
+// A duration that must be positive, at most kLongestDuration.
+double positive_duration(const TableReader& t, std::string_view key, double value) {
+  if (t.in_range(key, value, 0.0, kLongestDuration) == 0.0) t.fail(key, "expected a positive duration");
+  return value;
+}
+
 void read_integration(TableReader& root, Case& c) {
   if (!root.has_table("integration")) return;
   TableReader t = root.table("integration");
@@ -218,16 +224,14 @@ MotionSpec read_motion(TableReader& t) {
     m.shape = *motion::parse_pulse_shape(shape);
     m.pulse_amplitude = t.quantity("amplitude", Dimension::acceleration);
     if (m.pulse_amplitude == 0.0) t.fail("amplitude", "expected a non-zero acceleration");
-    m.pulse_duration = t.in_range("duration", t.quantity("duration", Dimension::time), 0.0, kLongestDuration);
-    if (m.pulse_duration == 0.0) t.fail("duration", "expected a positive duration");
+    m.pulse_duration = positive_duration(t, "duration", t.quantity("duration", Dimension::time));
   } else if (kind == "synthetic") {
     m.kind = MotionSpec::Kind::synthetic;
     motion::SyntheticMotion& s = m.synthetic;
     const std::optional<long> seed = t.optional_integer("seed");
     if (seed && *seed < 0) t.fail("seed", "expected a non-negative whole number");
     s.seed = static_cast<std::uint64_t>(seed.value_or(1));
-    s.duration = t.in_range("duration", t.quantity_or("duration", Dimension::time, s.duration), 0.0, kLongestDuration);
-    if (s.duration == 0.0) t.fail("duration", "expected a positive duration");
+    s.duration = positive_duration(t, "duration", t.quantity_or("duration", Dimension::time, s.duration));
     s.time_step = t.in_range("time_step", t.quantity_or("time_step", Dimension::time, s.time_step), kSmallestRecordStep,
                              s.duration / kFewestRecordSamples);
     if (s.duration / s.time_step > kMostRecordSamples)

@@ -10,7 +10,6 @@
 
 #include "commands/commands.h"
 #include "commands/validators.h"
-#include "core/text.h"
 #include "diagnosis/report.h"
 #include "diagnosis/synthesize.h"
 #include "io/output_paths.h"

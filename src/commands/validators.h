@@ -8,7 +8,6 @@
 #include <cstdint>
 #include <functional>
 #include <optional>
-#include <sstream>
 #include <string>
 #include <string_view>
 #include <system_error>
@@ -64,9 +63,8 @@ inline CLI::Validator seed_number() {
 
 // A range [low, high] of finite numbers, `what` naming the quantity and its unit.
 inline CLI::Validator number_within(const std::string& what, double low, double high) {
-  std::ostringstream text;
-  text << what << " from " << low << " to " << high;
-  return number_check(text.str(), [low, high](double x) { return x >= low && x <= high; }, "NUMBER");
+  return number_check(what + " from " + number_text(low) + " to " + number_text(high),
+                      [low, high](double x) { return x >= low && x <= high; }, "NUMBER");
 }
 
 }  // namespace caskdem::commands

@@ -581,7 +581,7 @@ std::optional<Series> prepare_input(Reporter& report, const Uniform& uniform, Ch
 struct Response {
   Series values;  // NaN in gaps; clipped and dead samples keep the value read
   Mask valid;
-  bool usable() const { return std::find(valid.begin(), valid.end(), 1) != valid.end(); }
+  bool usable() const { return any_valid(valid); }
 };
 
 void mask_runs(Mask& valid, const std::vector<Run>& runs) {

@@ -11,6 +11,7 @@
 // table channel, time not increasing, a long gap in the input) is an InputError naming the
 // file, the line or channel, and what was expected.
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <string>
@@ -41,6 +42,11 @@ struct MeasuredTest {
 
   double duration() const { return time.empty() ? 0.0 : time.back(); }
 };
+
+// Whether a channel has a sample that may be compared (a 1 in its mask).
+inline bool any_valid(const std::vector<std::uint8_t>& valid) {
+  return std::find(valid.begin(), valid.end(), std::uint8_t{1}) != valid.end();
+}
 
 // Longest gap (s) in the table acceleration that is bridged by interpolation.
 inline constexpr double kLongestBridgedInputGap = 0.05;

@@ -157,10 +157,7 @@ TestReference reference_of(const MeasuredTest& test, double stability_angle) {
       std::max(2.0 * test.time_step, 0.01),                        // rotation_lag, s
   };
   for (double& t : r.tolerance) t = std::max(t, 1e-12);
-  const auto has_sample = [](const std::vector<std::uint8_t>& valid) {
-    return std::uint8_t(std::find(valid.begin(), valid.end(), 1) != valid.end());
-  };
-  const std::uint8_t rotation_used = has_sample(test.rotation_valid), slide_used = has_sample(test.slide_valid);
+  const std::uint8_t rotation_used = any_valid(test.rotation_valid), slide_used = any_valid(test.slide_valid);
   r.compared = {rotation_used, rotation_used, rotation_used, rotation_used, rotation_used,
                 rotation_used, slide_used,    slide_used,    slide_used,    rotation_used};
   return r;

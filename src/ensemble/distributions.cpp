@@ -11,15 +11,30 @@ namespace caskdem {
 
 namespace {
 
-// Quantile of a normal truncated to [low, high] (in its own variable).
-double truncated_normal_quantile(double mean, double std, double low, double high, double u) {
-  const boost::math::normal_distribution<double> normal(mean, std);
-  const double lower = std::isfinite(low) ? boost::math::cdf(normal, low) : 0.0;
-  const double upper = std::isfinite(high) ? boost::math::cdf(normal, high) : 1.0;
-  const double p = lower + u * (upper - lower);
+// The normal behind a normal or lognormal distribution, in its own variable (ln x for a
+// lognormal), with the truncation bounds in that variable.
+struct UnderlyingNormal {
+  boost::math::normal_distribution<double> normal;
+  double lower, upper;
+
+  double probability_below_lower() const { return std::isfinite(lower) ? boost::math::cdf(normal, lower) : 0.0; }
+  double probability_below_upper() const { return std::isfinite(upper) ? boost::math::cdf(normal, upper) : 1.0; }
+};
+
+UnderlyingNormal underlying_normal(const Distribution& d) {
+  if (d.kind == Distribution::Kind::normal) return {boost::math::normal_distribution<double>(d.first, d.second), d.low, d.high};
+  constexpr double infinity = std::numeric_limits<double>::infinity();
+  return {boost::math::normal_distribution<double>(std::log(d.first), d.second), d.low > 0.0 ? std::log(d.low) : -infinity,
+          std::isfinite(d.high) ? std::log(d.high) : infinity};
+}
+
+// Quantile of the underlying normal truncated to [lower, upper].
+double truncated_quantile(const UnderlyingNormal& n, double u) {
+  const double lower = n.probability_below_lower();
+  const double p = lower + u * (n.probability_below_upper() - lower);
   // Guard the ends: p of exactly 0 or 1 has no finite quantile.
   const double clamped = std::clamp(p, 1e-300, 1.0 - 1e-16);
-  return std::clamp(boost::math::quantile(normal, clamped), low, high);
+  return std::clamp(boost::math::quantile(n.normal, clamped), n.lower, n.upper);
 }
 
 }  // namespace
@@ -31,25 +46,17 @@ double Distribution::quantile(double u) const {
     case Kind::uniform:
       return first + u * (second - first);
     case Kind::normal:
-      return truncated_normal_quantile(first, second, low, high, u);
-    case Kind::lognormal: {
-      const double log_low = low > 0.0 ? std::log(low) : -std::numeric_limits<double>::infinity();
-      const double log_high = std::isfinite(high) ? std::log(high) : std::numeric_limits<double>::infinity();
-      return std::exp(truncated_normal_quantile(std::log(first), second, log_low, log_high, u));
-    }
+      return truncated_quantile(underlying_normal(*this), u);
+    case Kind::lognormal:
+      return std::exp(truncated_quantile(underlying_normal(*this), u));
   }
   return first;
 }
 
 double Distribution::truncation_mass() const {
   if (kind != Kind::normal && kind != Kind::lognormal) return 1.0;
-  const bool logarithmic = kind == Kind::lognormal;
-  const boost::math::normal_distribution<double> normal(logarithmic ? std::log(first) : first, second);
-  const double lower = logarithmic ? (low > 0.0 ? std::log(low) : -std::numeric_limits<double>::infinity()) : low;
-  const double upper = logarithmic ? std::log(high) : high;
-  const double below_high = std::isfinite(upper) ? boost::math::cdf(normal, upper) : 1.0;
-  const double below_low = std::isfinite(lower) ? boost::math::cdf(normal, lower) : 0.0;
-  return below_high - below_low;
+  const UnderlyingNormal n = underlying_normal(*this);
+  return n.probability_below_upper() - n.probability_below_lower();
 }
 
 double Distribution::lowest() const {

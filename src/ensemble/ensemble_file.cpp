@@ -82,12 +82,6 @@ Distribution read_distribution(TableReader& t, const std::string& parameter) {
   return d;
 }
 
-std::string format_threshold(double value) {
-  std::ostringstream out;
-  out << value;
-  return out.str();
-}
-
 }  // namespace
 
 std::string intensity_name(IntensityMeasure measure) {
@@ -241,7 +235,7 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
       for (const toml::node& v : *list_of) {
         auto r = v.value<double>();
         if (!r || !(*r > 0.0)) t.fail("rotation_ratio", "expected positive thresholds");
-        e.limit_states.push_back({LimitState::Kind::rotation_ratio, *r, "rotation_ratio_" + format_threshold(*r)});
+        e.limit_states.push_back({LimitState::Kind::rotation_ratio, *r, "rotation_ratio_" + number_text(*r)});
       }
     }
     const toml::node* slides = document["limit_states"]["sliding"].node();
@@ -255,7 +249,7 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
         if (auto number = v.value<double>(); number && (v.is_floating_point() || v.is_integer())) d = *number;
         if (auto text = v.value<std::string>()) d = parse_quantity(*text, Dimension::length, error);
         if (!d || !(*d > 0.0)) t.fail("sliding", "expected positive distances" + (error.empty() ? "" : " (" + error + ")"));
-        e.limit_states.push_back({LimitState::Kind::sliding, *d, "sliding_" + format_threshold(*d) + "m"});
+        e.limit_states.push_back({LimitState::Kind::sliding, *d, "sliding_" + number_text(*d) + "m"});
       }
     }
     if (e.limit_states.empty()) t.fail("tip_over", "expected at least one limit state");

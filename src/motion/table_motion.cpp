@@ -27,9 +27,9 @@
 #include <cmath>
 #include <limits>
 #include <numbers>
-#include <sstream>
 #include <stdexcept>
 
+#include "core/text.h"
 #include "core/units.h"
 #include "motion/table_motion.h"
 
@@ -37,13 +37,6 @@ namespace caskdem::motion {
 namespace {
 
 using std::numbers::pi;
-
-std::string number_text(double x) {
-  std::ostringstream out;
-  out.precision(6);
-  out << x;
-  return out.str();
-}
 
 class SineMotion final : public TableMotion {
  public:
