@@ -295,7 +295,11 @@ std::unique_ptr<motion::TableMotion> make_motion(const MotionSpec& spec) {
         else if (spec.scaling == MotionSpec::Scaling::target_pgv) record = motion::scaled_to_pgv(record, spec.scale);
         else record = motion::scaled(record, spec.scale);
       } catch (const std::invalid_argument& e) {
-        throw InputError(located(spec.file, 0, e.what()));
+        const char* key = spec.scaling == MotionSpec::Scaling::target_pga   ? "target_pga"
+                          : spec.scaling == MotionSpec::Scaling::target_pgv ? "target_pgv"
+                                                                            : "scale";
+        throw InputError(located(spec.file, 0, std::string(e.what()) + " (asked for by " + key +
+                                                    (spec.where.empty() ? "" : " of the motion at " + spec.where) + ")"));
       }
       // PGV targets refer to the prototype motion; the time compression follows.
       if (spec.similarity_scale != 1.0) record = motion::time_scaled(record, time_factor);

@@ -37,7 +37,7 @@ struct MotionSpec {
   Scaling scaling = Scaling::factor;
   double scale = 1.0;            // factor, or target PGA (m/s^2) / PGV (m/s)
   double similarity_scale = 1.0; // N: a prototype motion applied to a 1/N model (time / sqrt(N))
-  std::string where;             // "case.toml:12 [motion]" for error messages
+  std::string where;             // "case.toml:12", the motion's kind, for error messages
 };
 
 // Builds the motion; a record that cannot be read is an InputError naming its file and line.

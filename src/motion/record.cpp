@@ -59,23 +59,24 @@ Record scaled(const Record& record, double factor) {
 }
 
 namespace {
-// The factor that brings a measure to its target; a zero record has no such factor.
-double factor_for(double measure, double target, const char* what) {
+// The factor that brings a measure (PGA or PGV) to its target; a zero record has no such factor.
+double factor_for(double measure, double target, const char* measure_name) {
   if (!std::isfinite(target) || target < 0.0)
-    throw std::invalid_argument(std::string(what) + ": the target must be finite and not negative");
+    throw std::invalid_argument(std::string("the target ") + measure_name + " must be finite and not negative");
   if (!(measure > 0.0))
-    throw std::invalid_argument(std::string(what) + ": the record's peak is zero (an all-zero record), so no factor reaches the target");
+    throw std::invalid_argument(std::string("the record's accelerations are all zero, so no scale factor brings its ") +
+                                measure_name + " to the target; expected a record with motion");
   return target / measure;
 }
 }  // namespace
 
 Record scaled_to_pga(const Record& record, double target_pga) {
-  return scaled(record, factor_for(peak_ground_acceleration(record), target_pga, "scaled_to_pga"));
+  return scaled(record, factor_for(peak_ground_acceleration(record), target_pga, "PGA"));
 }
 
 Record scaled_to_pgv(const Record& record, double target_pgv) {
   // PGV is linear in the accelerations (integration and baseline correction are linear).
-  return scaled(record, factor_for(peak_ground_velocity(record), target_pgv, "scaled_to_pgv"));
+  return scaled(record, factor_for(peak_ground_velocity(record), target_pgv, "PGV"));
 }
 
 Record time_scaled(const Record& record, double time_factor) {

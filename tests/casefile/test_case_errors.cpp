@@ -128,6 +128,27 @@ TEST_F(CaseErrors, ARecordScaledByZeroIsRefused) {
   EXPECT_THAT(error_of(file), HasSubstr("key motion.scale: expected a non-zero factor"));
 }
 
+TEST_F(CaseErrors, AnAllZeroRecordScaledToATargetNamesTheRecordAndTheKey) {
+  // No factor brings a zero PGA to 400 gal: the record's file, the key that asked and the
+  // case's motion are named, not the library function that found it.
+  std::string zeros = "t,acc\n";
+  for (int k = 0; k < 100; ++k) zeros += std::to_string(0.01 * k) + ",0\n";
+  const auto record = write("still.csv", zeros);
+  const auto file = variant_of(testing::case_path("model-1-3-elcentro-400gal.toml"), "zero-record.toml",
+                               "file = \"../../shared/motions/elcentro1940_ns_RSN6.AT2\"",
+                               "file = \"still.csv\"\nunit = \"g\"");
+  std::string message = "no error";
+  try {
+    (void)make_motion(load_case(file).horizontal);
+  } catch (const InputError& e) {
+    message = e.what();
+  }
+  EXPECT_THAT(message, HasSubstr(record.filename().string() + ": the record's accelerations are all zero, so no scale "
+                                                             "factor brings its PGA to the target"));
+  EXPECT_THAT(message, HasSubstr("(asked for by target_pga of the motion at " + file.string() + ":" +
+                                 std::to_string(line_of(file, "kind = \"record\"")) + ")"));
+}
+
 TEST_F(CaseErrors, MissingRequiredKey) {
   const auto file = variant("missing", "diameter = \"0.95 m\"\n", "");
   EXPECT_THAT(error_of(file), HasSubstr("missing key cask.diameter: expected a length"));
