@@ -1,10 +1,12 @@
 #include "casefile/toml_reader.h"
-#include "core/text.h"
 
 #include <cmath>
 #include <sstream>
+#include <string>
+#include <vector>
 
 #include "core/error.h"
+#include "core/text.h"
 
 namespace caskdem {
 
@@ -37,6 +39,17 @@ const toml::node* TableReader::node(std::string_view key) const { return table_.
 
 void TableReader::mark(std::string_view key) { read_.insert(std::string(key)); }
 
+void TableReader::missing(std::string_view key, const std::string& expected) const {
+  std::vector<std::string> unread;
+  for (const auto& [k, value] : table_)
+    if (read_.count(k.str()) == 0) unread.emplace_back(k.str());
+  const auto meant = likely_meant(key, unread);
+  throw InputError(located(file_, line_, "missing key " + key_path(key) + ": expected " + expected +
+                                             (meant ? " (is " + *meant + ", line " + std::to_string(line_of(*meant)) +
+                                                          ", a misspelling of it?)"
+                                                    : "")));
+}
+
 void TableReader::fail(std::string_view key, const std::string& message) const {
   throw InputError(located(file_, line_of(key), "key " + key_path(key) + ": " + message));
 }
@@ -60,9 +73,7 @@ std::optional<double> TableReader::optional_quantity(std::string_view key, Dimen
 }
 
 double TableReader::quantity(std::string_view key, Dimension dimension) {
-  if (!has(key)) {
-    throw InputError(located(file_, line_, "missing key " + key_path(key) + ": expected " + dimension_name(dimension)));
-  }
+  if (!has(key)) missing(key, dimension_name(dimension));
   return *optional_quantity(key, dimension);
 }
 
@@ -79,7 +90,7 @@ std::optional<std::string> TableReader::optional_string(std::string_view key) {
 }
 
 std::string TableReader::string(std::string_view key) {
-  if (!has(key)) throw InputError(located(file_, line_, "missing key " + key_path(key) + ": expected a string"));
+  if (!has(key)) missing(key, "a string");
   return *optional_string(key);
 }
 
@@ -89,7 +100,7 @@ std::string TableReader::choice(std::string_view key, const std::vector<std::str
   std::optional<std::string> value = optional_string(key);
   if (!value) {
     if (!fallback.empty()) return fallback;
-    throw InputError(located(file_, line_, "missing key " + key_path(key) + ": expected one of " + list));
+    missing(key, "one of " + list);
   }
   for (const std::string& a : allowed) {
     if (*value == a) return a;
@@ -114,7 +125,7 @@ std::optional<long> TableReader::optional_integer(std::string_view key) {
 }
 
 long TableReader::integer(std::string_view key) {
-  if (!has(key)) throw InputError(located(file_, line_, "missing key " + key_path(key) + ": expected a whole number"));
+  if (!has(key)) missing(key, "a whole number");
   return *optional_integer(key);
 }
 
@@ -189,9 +200,15 @@ void TableReader::reject_unknown_keys() const {
   for (const auto& [key, value] : table_) {
     if (read_.count(key.str()) == 0) {
       std::string known;
-      for (const std::string& k : read_) known += (known.empty() ? "" : ", ") + k;
+      std::vector<std::string> unused;  // known keys the table lacks: what a misspelling meant
+      for (const std::string& k : read_) {
+        known += (known.empty() ? "" : ", ") + k;
+        if (!table_.contains(k)) unused.push_back(k);
+      }
+      const auto meant = likely_meant(key.str(), unused);
       throw InputError(located(file_, static_cast<long>(value.source().begin.line),
-                               "unknown key " + key_path(key.str()) + (known.empty() ? "" : " (known here: " + known + ")")));
+                               "unknown key " + key_path(key.str()) + (meant ? "; did you mean " + *meant + "?" : "") +
+                                   (known.empty() ? "" : " (known here: " + known + ")")));
     }
   }
 }

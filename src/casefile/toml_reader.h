@@ -61,6 +61,8 @@ class TableReader {
  private:
   const toml::node* node(std::string_view key) const;
   void mark(std::string_view key);
+  // A required key that is absent; names a key of the table that may be it misspelt.
+  [[noreturn]] void missing(std::string_view key, const std::string& expected) const;
 
   const toml::table& table_;
   std::filesystem::path file_;

@@ -1,5 +1,6 @@
 #include "core/text.h"
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cstdlib>
@@ -67,6 +68,52 @@ std::string number_text(double x) {
   out.precision(6);
   out << x;
   return out.str();
+}
+
+namespace {
+
+std::string lower_case(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
+// Levenshtein distance by the two-row dynamic programme (Wagner & Fischer 1974).
+std::size_t edit_distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> previous(b.size() + 1), current(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) previous[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    current[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t substitution = previous[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1);
+      current[j] = std::min({substitution, previous[j] + 1, current[j - 1] + 1});
+    }
+    std::swap(previous, current);
+  }
+  return previous[b.size()];
+}
+
+}  // namespace
+
+std::optional<std::string> likely_meant(std::string_view name, const std::vector<std::string>& candidates) {
+  const std::string given = lower_case(trim(name));
+  if (given.empty()) return std::nullopt;
+  const std::size_t allowed = given.size() <= 4 ? 1 : 2;
+  std::optional<std::string> best;
+  std::size_t best_distance = std::numeric_limits<std::size_t>::max();
+  for (const std::string& candidate : candidates) {
+    const std::string known = lower_case(candidate);
+    if (known == given) continue;
+    const std::size_t distance = edit_distance(given, known);
+    const std::string_view shorter = given.size() < known.size() ? given : known;
+    const std::string_view longer = given.size() < known.size() ? known : given;
+    const bool begins_with = shorter.size() >= 3 && longer.substr(0, shorter.size()) == shorter;
+    if ((distance <= allowed || begins_with) && distance < best_distance) {
+      best = candidate;
+      best_distance = distance;
+    }
+  }
+  return best;
 }
 
 }  // namespace caskdem

@@ -26,4 +26,10 @@ std::optional<double> parse_double(std::string_view token);
 // small or large value is not printed as 0.000000 or as 309 digits.
 std::string number_text(double x);
 
+// For a name the reader does not know (a column, a key): the candidate it most likely
+// misspells, compared without case by edit distance (Levenshtein: insertions, deletions,
+// substitutions), when within 1 edit for names of up to 4 letters and 2 beyond, or when one
+// name of at least 3 letters begins with the other ("table_acc_vert"); nullopt otherwise.
+std::optional<std::string> likely_meant(std::string_view name, const std::vector<std::string>& candidates);
+
 }  // namespace caskdem

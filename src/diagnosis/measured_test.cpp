@@ -234,11 +234,18 @@ Layout parse_header(Reporter& report, long line_number, std::string_view line) {
   }
 
   // Reported only once the header is known to be usable, so an error comes alone.
-  for (std::size_t i = 0; i < names.size(); ++i)
-    if (!channel_named(names[i]))
-      report.issue(names[i].empty() ? std::string_view("(unnamed column)") : names[i],
-                   "unknown column (column " + std::to_string(i + 1) + " of the header, line " +
-                       std::to_string(line_number) + "); ignored");
+  // A near miss of a channel the header lacks is most likely that channel misspelt.
+  std::vector<std::string> absent;
+  for (std::size_t c = 0; c < kChannelCount; ++c)
+    if (!layout.column[c]) absent.emplace_back(kChannels[c].name);
+  for (std::size_t i = 0; i < names.size(); ++i) {
+    if (channel_named(names[i])) continue;
+    const auto meant = likely_meant(names[i], absent);
+    report.issue(names[i].empty() ? std::string_view("(unnamed column)") : names[i],
+                 "unknown column (column " + std::to_string(i + 1) + " of the header, line " +
+                     std::to_string(line_number) + "); ignored" +
+                     (meant ? "; did you mean " + in_quotes(*meant) + "?" : ""));
+  }
   return layout;
 }
 

@@ -18,6 +18,7 @@ namespace caskdem {
 namespace {
 
 using ::testing::HasSubstr;
+using ::testing::Not;
 
 // Variants of the shipped 1/3 model case, one line replaced (or removed, or added).
 class CaseErrors : public testing::TemporaryFiles {
@@ -75,6 +76,23 @@ TEST_F(CaseErrors, UnknownKeyNamesItAndTheKnownOnes) {
   const std::string e = error_of(file);
   EXPECT_THAT(e, HasSubstr(":" + std::to_string(line_of(file, "hieght")) + ": unknown key cask.hieght"));
   EXPECT_THAT(e, HasSubstr("height"));
+}
+
+TEST_F(CaseErrors, AMisspeltOptionalKeyIsNamedWithTheKeyItMeant) {
+  // ramp_cycles is optional, so its misspelling is only an unknown key: the message says
+  // which known key the table lacks that it is one edit from. A name far from every key gets
+  // no guess.
+  const auto misspelt = variant("ramp", "ramp_cycles = 2", "ramp_cycle = 2");
+  EXPECT_THAT(error_of(misspelt), HasSubstr(":" + std::to_string(line_of(misspelt, "ramp_cycle")) +
+                                            ": unknown key motion.ramp_cycle; did you mean ramp_cycles?"));
+  const auto foreign = variant("foreign", "ramp_cycles = 2", "ramp_cycles = 2\nwobble = 2");
+  EXPECT_THAT(error_of(foreign), Not(HasSubstr("did you mean")));
+}
+
+TEST_F(CaseErrors, AMisspeltRequiredKeyIsNamedInTheMissingKeysMessage) {
+  const auto file = variant("diamter", "diameter = \"0.95 m\"", "diamter = \"0.95 m\"");
+  EXPECT_THAT(error_of(file), HasSubstr("missing key cask.diameter: expected a length (is diamter, line " +
+                                        std::to_string(line_of(file, "diamter")) + ", a misspelling of it?)"));
 }
 
 TEST_F(CaseErrors, WrongUnitNamesTheAcceptedOnes) {

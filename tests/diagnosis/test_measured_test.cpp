@@ -31,6 +31,7 @@ using ::testing::Each;
 using ::testing::ElementsAre;
 using ::testing::HasSubstr;
 using ::testing::IsEmpty;
+using ::testing::Not;
 using ::testing::SizeIs;
 
 // ---- a smooth test with no imperfection ----------------------------------------------------
@@ -229,10 +230,22 @@ TEST_F(MeasuredTestFiles, AnUnknownColumnIsIgnoredWithAnIssue) {
   const auto test = read_measured_test(write("noted.csv", csv_text(columns, uniform_times(rows, exact_step))));
   ASSERT_THAT(test.issues, SizeIs(1));
   EXPECT_THAT(test.issues[0], AllOf(HasSubstr("noted.csv"), HasSubstr("operator_note"), HasSubstr("column 3"),
-                                    HasSubstr("ignored")));
+                                    HasSubstr("ignored"), Not(HasSubstr("did you mean"))));
   auto rest = test;
   rest.issues.clear();
   expect_clean(rest, rows, exact_step);
+}
+
+TEST_F(MeasuredTestFiles, AMisspeltOptionalColumnIsNamedWithTheChannelItMeant) {
+  // An optional channel misspelt would be ignored without a word about it: the issue names
+  // the absent channel the column is two edits from.
+  auto columns = required_columns();
+  columns.push_back(Column{"Theta_Dott", [](std::size_t, double) { return std::string("0.1"); }});
+  const auto test = read_measured_test(write("misspelt.csv", csv_text(columns, uniform_times(rows, exact_step))));
+  ASSERT_THAT(test.issues, SizeIs(1));
+  EXPECT_THAT(test.issues[0], AllOf(HasSubstr("Theta_Dott"), HasSubstr("column 5"), HasSubstr("ignored"),
+                                    HasSubstr("did you mean 'theta_dot'?")));
+  EXPECT_FALSE(test.has_angular_velocity);
 }
 
 // ---- resampling ----------------------------------------------------------------------------
