@@ -21,6 +21,12 @@ std::string_view trim(std::string_view s) {
   return s;
 }
 
+std::string lower_case(std::string_view s) {
+  std::string out(s);
+  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return out;
+}
+
 std::vector<std::string> read_text_lines(const std::filesystem::path& file, const std::string& expected) {
   std::error_code ec;
   const auto status = std::filesystem::status(file, ec);
@@ -71,12 +77,6 @@ std::string number_text(double x) {
 }
 
 namespace {
-
-std::string lower_case(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 // Levenshtein distance by the two-row dynamic programme (Wagner & Fischer 1974).
 std::size_t edit_distance(const std::string& a, const std::string& b) {

@@ -13,6 +13,9 @@ namespace caskdem {
 // Without leading and trailing white space.
 std::string_view trim(std::string_view s);
 
+// In lower case (ASCII), for names compared without case.
+std::string lower_case(std::string_view s);
+
 // The file's lines, without line ends (LF or CRLF) and without a UTF-8 byte-order mark. A
 // missing, unreadable, UTF-16 or binary file is an InputError naming the file (and line) and
 // saying that `expected` was expected (e.g. "a measured-test CSV file").

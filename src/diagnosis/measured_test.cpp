@@ -29,7 +29,6 @@
 
 #include <algorithm>
 #include <array>
-#include <cctype>
 #include <charconv>
 #include <cmath>
 #include <fstream>
@@ -92,12 +91,6 @@ using Series = std::vector<double>;  // NaN where a sample is missing
 using Mask = std::vector<std::uint8_t>;
 
 // ---- text --------------------------------------------------------------------------------
-
-std::string lower(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return out;
-}
 
 // Built by appending: "'" + std::string(s) trips a false -Wrestrict in GCC 12.
 std::string in_quotes(std::string_view s) {
@@ -193,7 +186,7 @@ struct Layout {
 };
 
 std::optional<Channel> channel_named(std::string_view name) {
-  const std::string key = lower(name);
+  const std::string key = lower_case(name);
   for (std::size_t c = 0; c < kChannelCount; ++c)
     if (kChannels[c].name == key) return static_cast<Channel>(c);
   return std::nullopt;
@@ -257,7 +250,7 @@ struct Columns {
   std::vector<long> line;
 };
 
-bool is_missing_text(std::string_view field) { return field.empty() || lower(field) == "nan"; }
+bool is_missing_text(std::string_view field) { return field.empty() || lower_case(field) == "nan"; }
 
 double parse_value(const Reporter& report, long line_number, Channel channel, std::string_view field) {
   if (is_missing_text(field)) return kMissing;
