@@ -13,7 +13,6 @@
 #include "casefile/case_file.h"
 #include "commands/commands.h"
 #include "commands/validators.h"
-#include "commands/validators.h"
 #include "core/error.h"
 #include "core/text.h"
 #include "core/units.h"
