@@ -5,7 +5,9 @@
 // made by synthesize-measured. Values come from --at NAME=VALUE (SI, in the units the
 // parameter list prints), else from a fit in a diagnosis.json or calibration.json, or the true
 // values in synthesize-measured's truth.json (--from), else from the specimen's nominal values
-// with every mechanism switched off.
+// with every mechanism switched off. A fit from a file brings the standard errors its held-out
+// tests were judged with (their tolerances widened by the prediction's spread over them), so at
+// the fit's own point the numbers are the fit's; any other source judges the point alone.
 
 #include <charconv>
 #include <cmath>
@@ -68,8 +70,11 @@ const nlohmann::json* find_fit(const nlohmann::json& j, const std::string& model
   return nullptr;
 }
 
+// Takes the model's values from a fit or a truth; a fit's held-out standard errors (those its
+// held-out tests were judged with) go to `heldout_standard_error`, left empty where it has none.
 void take_from_file(const std::filesystem::path& file, const diagnosis::ModelVariant& variant,
-                    std::vector<double>& point, std::vector<std::string>& source) {
+                    std::vector<double>& point, std::vector<std::string>& source,
+                    std::vector<double>& heldout_standard_error) {
   std::ifstream in(file);
   if (!in) throw InputError(located(file, 0, "no such file (expected a diagnosis.json, calibration.json or truth.json)"));
   nlohmann::json j;
@@ -106,6 +111,18 @@ void take_from_file(const std::filesystem::path& file, const diagnosis::ModelVar
     point[i] = value->get<double>();
     check_in_box(p, point[i], file.string());
     source[i] = file.filename().string();
+  }
+  if (is_truth || !fit->contains("heldout_standard_errors")) return;
+  const nlohmann::json& errors = (*fit)["heldout_standard_errors"];
+  heldout_standard_error.assign(point.size(), 0.0);
+  for (std::size_t i = 0; i < variant.parameters().size(); ++i) {
+    const std::string& name = variant.parameters()[i].name;
+    if (!errors.is_object() || !errors.contains(name) || !errors[name].is_number() ||
+        !std::isfinite(errors[name].get<double>()) || errors[name].get<double>() < 0.0) {
+      throw InputError(located(file, 0, "the fit of \"" + variant.name() + "\" has no heldout_standard_errors." + name +
+                                            " (expected a number >= 0 for every parameter)"));
+    }
+    heldout_standard_error[i] = errors[name].get<double>();
   }
 }
 
@@ -192,12 +209,13 @@ void add_evaluate_measured(CLI::App& app) {
     for (std::size_t i = 0; i < point.size(); ++i) {
       if (variant.parameters()[i].mechanism) source[i] = "switched off";
     }
-    if (!options->from.empty()) take_from_file(options->from, variant, point, source);
+    std::vector<double> heldout_standard_error;
+    if (!options->from.empty()) take_from_file(options->from, variant, point, source, heldout_standard_error);
     for (const std::string& assignment : options->at) take_assignment(assignment, variant, point, source);
 
     diagnosis::DiagnosisOptions run_options;
     run_options.threads = options->threads;
-    const diagnosis::PointEvaluation e = diagnosis::evaluate_point(set, mechanisms, point, run_options);
+    const diagnosis::PointEvaluation e = diagnosis::evaluate_point(set, mechanisms, point, heldout_standard_error, run_options);
 
     std::cout << "model           " << e.model << "\n";
     for (std::size_t i = 0; i < e.parameters.size(); ++i) {
@@ -218,7 +236,10 @@ void add_evaluate_measured(CLI::App& app) {
     }
     std::cout << "training J      " << std::setprecision(5) << e.training_objective << " (" << e.training_residual_count
               << " scaled residuals; what the fits minimise)\n";
-    std::cout << "held-out error  " << e.heldout_error << " (RMS of scaled residuals)\n";
+    std::cout << "held-out error  " << e.heldout_error << " (RMS of scaled residuals; "
+              << (heldout_standard_error.empty() ? "judged at the point alone"
+                                                 : "tolerances widened by the prediction's spread over the fit's standard errors")
+              << ")\n";
     std::cout << "BIC             " << e.bic << "\n";
     if (!options->json.empty()) {
       std::ofstream out(options->json);

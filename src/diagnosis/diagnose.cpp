@@ -20,6 +20,10 @@ constexpr int kPredictabilityRealisations = 8;
 // chaotic earthquake test.
 constexpr double kPredictableWidening = 2.0;
 
+// Draws of a fit's parameters whose spread widens its held-out tests' tolerances
+// (predictability.cpp, add_fit_spread).
+constexpr int kFitSpreadDraws = 16;
+
 // What every model of a diagnosis is judged by: each test's tolerances and the table inputs it
 // is simulated with (the measured channel, then noisy copies; measures.h, marginal_loss).
 struct Yardstick {
@@ -124,13 +128,28 @@ double error_of(const std::vector<double>& loss, const Yardstick& yardstick, con
   return count > 0 ? std::sqrt(sum / double(count)) : 0.0;
 }
 
-// Every test's loss and residuals at one point (the tests in parallel).
+// Every test's loss and residuals at one point (the tests in parallel). The held-out tests are
+// judged as predictions: with the standard errors of the fit the point comes from, their
+// tolerances also allow the spread of the model's prediction over those errors (none given:
+// the point alone).
 Judged judge_at(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant,
-                const std::vector<double>& point, const DiagnosisOptions& options) {
+                const std::vector<double>& point, const std::vector<double>& standard_error,
+                const DiagnosisOptions& options) {
   std::vector<int> all(set.tests.size());
   std::iota(all.begin(), all.end(), 0);
   Judged judged;
   (void)objective_over(set, yardstick, variant, all, {point}, options, &judged);
+  if (!standard_error.empty()) {
+    Yardstick predictive = yardstick;
+    add_fit_spread(predictive.references, set.tests, set.heldout, variant, point, standard_error, kFitSpreadDraws,
+                   set.settings.seed);
+    Judged heldout;
+    (void)objective_over(set, predictive, variant, set.heldout, {point}, options, &heldout);
+    for (int t : set.heldout) {
+      judged.loss[t] = heldout.loss[t];
+      judged.residuals[t] = std::move(heldout.residuals[t]);
+    }
+  }
   return judged;
 }
 
@@ -188,7 +207,9 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
   }
   m.fit = fit_parameters(m.parameters, starts, objective, fit_options, m.training_residual_count);
 
-  Judged judged = judge_at(set, yardstick, variant, m.fit.best, options);
+  // The curvature's errors, before any jackknife raises them: what the held-out tests are judged with.
+  m.heldout_standard_error = m.fit.standard_error;
+  Judged judged = judge_at(set, yardstick, variant, m.fit.best, m.heldout_standard_error, options);
   m.loss = std::move(judged.loss);
   m.residuals = std::move(judged.residuals);
   m.bic = bic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
@@ -258,6 +279,14 @@ ModelFit switched_off(const ModelFit& extended, const ModelVariant& variant) {
   }
   m.fit.best = x;
   m.fit.standard_error.clear();
+  // Judged as the model it extends: its errors, and none for the mechanism's parameters.
+  std::vector<double> error(m.parameters.size(), 0.0);
+  for (std::size_t j = 0; j < m.parameters.size(); ++j) {
+    for (std::size_t i = 0; i < extended.parameters.size() && i < extended.heldout_standard_error.size(); ++i) {
+      if (m.parameters[j].name == extended.parameters[i].name) error[j] = extended.heldout_standard_error[i];
+    }
+  }
+  m.heldout_standard_error = extended.heldout_standard_error.empty() ? std::vector<double>{} : error;
   m.fit.uncertainty_note = "the fit did not improve on the model it extends: the mechanism is switched off";
   m.bic = bic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
   m.aic = aic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
@@ -408,18 +437,24 @@ ModelFit calibrate_baseline(const MeasuredSet& set, const DiagnosisOptions& opti
 }
 
 PointEvaluation evaluate_point(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms,
-                               const std::vector<double>& point, const DiagnosisOptions& options) {
+                               const std::vector<double>& point, const std::vector<double>& heldout_standard_error,
+                               const DiagnosisOptions& options) {
   const ModelVariant variant(set.specimen, mechanisms, set.vertical_measured);
   if (point.size() != variant.parameters().size()) {
     throw std::invalid_argument("evaluate_point: " + std::to_string(point.size()) + " values for the " +
                                 std::to_string(variant.parameters().size()) + " parameters of " + variant.name());
+  }
+  if (!heldout_standard_error.empty() && heldout_standard_error.size() != point.size()) {
+    throw std::invalid_argument("evaluate_point: " + std::to_string(heldout_standard_error.size()) +
+                                " standard errors for the " + std::to_string(point.size()) + " parameters of " +
+                                variant.name());
   }
   PointEvaluation e;
   e.model = variant.name();
   e.parameters = variant.parameters();
   e.point = point;
   const Yardstick yardstick = yardstick_of(set);
-  Judged judged = judge_at(set, yardstick, variant, point, options);
+  Judged judged = judge_at(set, yardstick, variant, point, heldout_standard_error, options);
   e.residuals = std::move(judged.residuals);
   e.loss = std::move(judged.loss);
   // Summed in the order of the training tests, as the fits' objective is.

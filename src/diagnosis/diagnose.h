@@ -14,7 +14,10 @@
 //     squares within a few tolerances; src/diagnosis/measures.h) and k parameters,
 //     BIC = N ln(J/N) + k ln N (Gaussian residuals of unknown common variance where the loss
 //     is quadratic). A test simulated with several table inputs (input_realisations) adds its
-//     marginal loss (measures.h) in place of one input's loss.
+//     marginal loss (measures.h) in place of one input's loss. A held-out test is judged as a
+//     prediction: its tolerances also allow the spread of the model's response over draws of
+//     its fitted parameters (measures.h, add_fit_spread), so a fit whose training tests leave
+//     a knife-edge held-out test undecided is not charged for the side its point falls on.
 //  5. The cause is the mechanism with the largest held-out gain among the significant ones:
 //     held-out gain >= minimum_gain, BIC lower by at least -maximum_bic_delta, and the held-out
 //     error lower on at least half of the held-out tests. None significant: "none", the model
@@ -57,6 +60,9 @@ struct ModelFit {
   std::vector<std::vector<double>> residuals;  // per test (all tests), per measure, at the fitted point
   std::vector<double> loss;                    // per test (all tests), at the fitted point (measures.h, marginal_loss)
   double heldout_error = 0.0;                  // sqrt(loss per residual) over the held-out tests
+  // The standard errors (the curvature's) whose prediction spread widened the held-out tests'
+  // tolerances (measures.h, add_fit_spread); empty: judged at the point alone.
+  std::vector<double> heldout_standard_error;
 };
 
 struct CandidateScore {
@@ -117,7 +123,8 @@ struct PointEvaluation {
 };
 
 PointEvaluation evaluate_point(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms,
-                               const std::vector<double>& point, const DiagnosisOptions& options);
+                               const std::vector<double>& point, const std::vector<double>& heldout_standard_error,
+                               const DiagnosisOptions& options);
 
 // The simulated histories of a fitted model on every test (for reports and plots).
 std::vector<SimulatedHistory> fitted_histories(const MeasuredSet& set, const ModelFit& fit, InstructionSet isa);

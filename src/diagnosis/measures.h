@@ -75,6 +75,15 @@ TestReference reference_of(const MeasuredTest& test, double stability_angle);
 void add_predictability(std::vector<TestReference>& references, const std::vector<MeasuredTest>& tests,
                         const ModelVariant& variant, const std::vector<double>& x, int realisations, std::uint64_t seed);
 
+// Adds to the tolerances of the tests `which` the spread of their measures over `draws`
+// simulations of the model at its fitted point x moved by its standard errors (x_i + se_i z_i,
+// clamped to the parameter's range; src/diagnosis/predictability.cpp): what the fit leaves its
+// prediction of those tests open to. Without standard errors (none, or not one per parameter)
+// the tolerances stay.
+void add_fit_spread(std::vector<TestReference>& references, const std::vector<MeasuredTest>& tests,
+                    const std::vector<int>& which, const ModelVariant& variant, const std::vector<double>& x,
+                    const std::vector<double>& standard_error, int draws, std::uint64_t seed);
+
 // The table inputs a test is judged with: the measured channel first, then `count - 1` copies
 // with fresh noise at the level estimated from the channel (the same draws at every point a
 // fit tries, so that its objective is a function of the parameters alone).

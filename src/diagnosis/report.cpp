@@ -41,6 +41,13 @@ nlohmann::json fit_json(const ModelFit& m) {
   j["bic"] = m.bic;
   j["aic"] = m.aic;
   j["heldout_error"] = m.heldout_error;
+  // The errors whose prediction spread widened the held-out tests' tolerances (evaluate-measured
+  // --from takes them, to judge this point as the diagnosis did).
+  if (!m.heldout_standard_error.empty()) {
+    for (std::size_t i = 0; i < m.parameters.size(); ++i) {
+      j["heldout_standard_errors"][m.parameters[i].name] = m.heldout_standard_error[i];
+    }
+  }
   j["evaluations"] = m.fit.evaluations;
   j["populations"] = m.fit.populations;
   if (!m.fit.uncertainty_method.empty()) j["uncertainty_method"] = m.fit.uncertainty_method;

@@ -6,7 +6,8 @@
 // of the 1/3 model cask) must not. At a fit's own point the evaluation gives the fit's
 // numbers (with one table input per test or several), so a user can set any point beside the
 // fit; with R table inputs a test costs at most 2 ln R more than with the measured channel
-// alone, the bound of the marginal loss. Data made without noise are reproduced at their true
+// alone, the bound of the marginal loss. A held-out test's tolerances also allow the spread of
+// the prediction over the fit's standard errors. Data made without noise are reproduced at their true
 // values, with every mechanism. Bad values on the command line get one message naming the
 // option and what was expected.
 
@@ -61,14 +62,14 @@ TEST(EvaluatePoint, TheTrueValuesAgreeWithinTolerancesAndASlipperyFloorDoesNot) 
   options.threads = 2;
   const std::vector<double> true_point = {value_of(truth, "friction"), value_of(truth, "damping_ratio"),
                                           value_of(truth, "stiffness_scale")};
-  const PointEvaluation at_truth = evaluate_point(set, {}, true_point, options);
+  const PointEvaluation at_truth = evaluate_point(set, {}, true_point, {}, options);
   EXPECT_EQ(at_truth.model, "baseline");
   ASSERT_EQ(at_truth.loss.size(), set.tests.size());
   EXPECT_LT(at_truth.heldout_error, 1.0);
 
   std::vector<double> slippery = true_point;
   slippery[0] = 0.08;
-  const PointEvaluation sliding = evaluate_point(set, {}, slippery, options);
+  const PointEvaluation sliding = evaluate_point(set, {}, slippery, {}, options);
   EXPECT_GT(sliding.heldout_error, 1.0);
   EXPECT_GT(sliding.training_objective, at_truth.training_objective);
 }
@@ -83,9 +84,9 @@ TEST(EvaluatePoint, MoreTableInputsChargeEachTestAtMostTwiceTheLogOfTheirNumberM
   options.threads = 2;
   const std::vector<double> true_point = {value_of(truth, "friction"), value_of(truth, "damping_ratio"),
                                           value_of(truth, "stiffness_scale")};
-  const PointEvaluation one = evaluate_point(set, {}, true_point, options);
+  const PointEvaluation one = evaluate_point(set, {}, true_point, {}, options);
   set.settings.input_realisations = 4;
-  const PointEvaluation four = evaluate_point(set, {}, true_point, options);
+  const PointEvaluation four = evaluate_point(set, {}, true_point, {}, options);
   ASSERT_EQ(four.loss.size(), one.loss.size());
   int changed = 0;
   for (std::size_t t = 0; t < one.loss.size(); ++t) {
@@ -105,7 +106,7 @@ TEST_P(AtAFitsOwnPoint, ItGivesTheFitsNumbers) {
   DiagnosisOptions options;
   options.threads = 2;
   const ModelFit fit = calibrate_baseline(set, options);
-  const PointEvaluation e = evaluate_point(set, {}, fit.fit.best, options);
+  const PointEvaluation e = evaluate_point(set, {}, fit.fit.best, fit.heldout_standard_error, options);
   // The same simulations and the same order of summation: equal, not merely close.
   EXPECT_EQ(e.training_objective, fit.fit.objective);
   EXPECT_EQ(e.heldout_error, fit.heldout_error);
@@ -115,6 +116,43 @@ TEST_P(AtAFitsOwnPoint, ItGivesTheFitsNumbers) {
 }
 
 INSTANTIATE_TEST_SUITE_P(TableInputs, AtAFitsOwnPoint, ::testing::Values(1, 3));
+
+// A held-out test is judged as a prediction: its tolerances also allow the spread of the
+// model's response over draws of the fitted parameters (x_i + se_i z_i). Tolerances only
+// grow, so no held-out residual grows, and the training tests are not touched. Zero standard
+// errors make every draw the point itself: the judgement at the point alone, exactly.
+TEST(EvaluatePoint, HeldOutTestsAreJudgedWithTheSpreadOfTheFitsPrediction) {
+  const TestDirectory directory;
+  SyntheticTruth truth;
+  const MeasuredSet set = read_measured_set(synthetic_set(directory, 1, &truth));
+  DiagnosisOptions options;
+  options.threads = 2;
+  const std::vector<double> point = {value_of(truth, "friction"), value_of(truth, "damping_ratio"),
+                                     value_of(truth, "stiffness_scale")};
+  const PointEvaluation alone = evaluate_point(set, {}, point, {}, options);
+  const PointEvaluation certain = evaluate_point(set, {}, point, {0.0, 0.0, 0.0}, options);
+  EXPECT_EQ(certain.loss, alone.loss);
+  EXPECT_EQ(certain.residuals, alone.residuals);
+  // A tenth of each value: friction known to +-0.03 moves the sliding of a sine test by far more
+  // than its sensor noise.
+  const PointEvaluation uncertain =
+      evaluate_point(set, {}, point, {0.1 * point[0], 0.1 * point[1], 0.1 * point[2]}, options);
+  for (int t : set.training) {
+    EXPECT_EQ(uncertain.loss[t], alone.loss[t]);
+    EXPECT_EQ(uncertain.residuals[t], alone.residuals[t]);
+  }
+  int narrowed = 0;
+  for (int t : set.heldout) {
+    EXPECT_LE(uncertain.loss[t], alone.loss[t]);
+    for (std::size_t m = 0; m < measure_names().size(); ++m) {
+      EXPECT_LE(std::abs(uncertain.residuals[t][m]), std::abs(alone.residuals[t][m])) << measure_names()[m];
+      narrowed += std::abs(uncertain.residuals[t][m]) < std::abs(alone.residuals[t][m]);
+    }
+  }
+  EXPECT_GT(narrowed, 0);  // the draws are simulated, not copies of the point
+  EXPECT_LT(uncertain.heldout_error, alone.heldout_error);
+  EXPECT_EQ(uncertain.training_objective, alone.training_objective);
+}
 
 // Data without noise, from a truth with one mechanism (or none): at the true values the
 // diagnosis's simulation of each test is the generator's own, so every residual is the CSV
@@ -141,7 +179,7 @@ TEST_P(NoiseFreeData, AreReproducedAtTheTrueValues) {
   for (const Parameter& p : variant.parameters()) true_point.push_back(value_of(truth, p.name));
   DiagnosisOptions options;
   options.threads = 2;
-  const PointEvaluation e = evaluate_point(set, spec.hidden, true_point, options);
+  const PointEvaluation e = evaluate_point(set, spec.hidden, true_point, {}, options);
   ASSERT_EQ(e.residuals.size(), set.tests.size());
   for (std::size_t t = 0; t < set.tests.size(); ++t) {
     for (std::size_t m = 0; m < e.residuals[t].size(); ++m) {

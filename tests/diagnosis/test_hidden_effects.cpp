@@ -13,9 +13,10 @@
 // decay speed settled in a basin other than the truth's, with a lower training objective
 // (28.6 against 35.5) and a held-out gain of 0.03.
 //
-// The floor layer (seed 106) is still not found, and its test is disabled (ctest lists it as
-// not run) rather than weakened. Its fit now reaches the truth's basin, but loses on one
-// held-out test:
+// The floor layer (seed 106) is found since a held-out test is judged as a prediction: its
+// tolerances also allow the spread of the fitted model's response over draws of its fitted
+// parameters (src/diagnosis/predictability.cpp, add_fit_spread). Held-out gain 0.207, BIC
+// -118.1; -0.03 before. It is the thinnest margin of these tests (the criterion is 0.2). How:
 // - The search. The baseline mimics the soft layer with a soft, heavily damped contact that does
 //   not slide (friction 1.21; stiffness scale 0.50 and damping ratio 0.19, 0.27 and 0.25 with
 //   the earlier search), and the truth's basin is a few percent wide in every parameter: a
@@ -29,11 +30,18 @@
 //   scale 1.198, layer ratio 0.0877 and depth 0.355 mm against 0.309, 0.0422, 1.161, 0.0918 and
 //   0.341 mm).
 // - The held-out test5. That fit predicts every rotation measure of both held-out tests within
-//   its tolerance, but test5's residual sliding is off by 7.1 tolerances: test5 slides only
-//   when friction is below about 0.32, and the training tests do not pin friction that closely
-//   (their J is 9.5, 8.5 and 8.7 at friction 0.32, 0.33 and 0.34, test5's loss 1.6, 15 and 34).
-//   That one miss makes the held-out gain -0.03 (BIC -118). A held-out error that grows only
-//   logarithmically beyond a tolerance, sqrt(mean ln(1 + r^2)), gives 0.31 and names the layer,
+//   its tolerance, but judged at its point alone test5's residual sliding is off by 7.1
+//   tolerances: test5 slides only when friction is below about 0.32, and the training tests do
+//   not pin friction that closely (their J is 9.5, 8.5 and 8.7 at friction 0.32, 0.33 and 0.34,
+//   test5's loss 1.6, 15 and 34). The fit's own standard error of friction (the curvature's) is
+//   0.0075, so some of the 16 draws of its parameters slide on test5; with that spread the
+//   miss is 4.2 tolerances and the layer's held-out error 1.03 against the baseline's 1.30
+//   (1.38 against 1.34 judged at the points alone: gain -0.03). Over the 180 success-rate data
+//   sets it turned two other misses into hits and no answer wrong (docs/diagnosis-accuracy.md,
+//   "Held-out tests judged as predictions").
+//   Tried before and not adopted, each costing velocity-dependent friction on the success-rate
+//   seeds: a held-out error that grows only logarithmically beyond a tolerance,
+//   sqrt(mean ln(1 + r^2)), gives 0.31 and names the layer,
 //   but on the success-rate seeds it costs velocity-dependent friction more than it gains
 //   (seed 1008: 0.23 with the present error, 0.10 with the log score; over seeds 1001 to 1009
 //   the friction was named in 2 of 9 with it, 4 of 9 before either change; rows in
@@ -42,7 +50,7 @@
 //   likelihood over the fitted point and 32 draws from the fit's Laplace posterior): it names
 //   the layer (gain 0.54) and all ten tests here pass with it, but over seeds 1001 to 1008
 //   the friction was named in 3 of 8 against 4, and once a wrong cause was named (rows in
-//   bench/results/diagnosis-success-predictive-trial.csv; docs/diagnosis-accuracy.md, "How often it is right").
+//   bench/results/diagnosis-success-predictive-trial.csv; docs/diagnosis-accuracy.md, "How often it was right judged at the fitted point").
 //   Four table inputs per test, other held-out pairs, and the held-out error pooled over four
 //   folds did not find it either (measured before the search changes).
 // - Why the truth scores worse than that fit (J 17.3 against 8.8): 13.2 of it is the earthquake
@@ -137,14 +145,9 @@ INSTANTIATE_TEST_SUITE_P(
     ::testing::Values(HiddenCase{Mechanism::velocity_dependent_friction, 101},
                       HiddenCase{Mechanism::amplitude_dependent_restitution, 102},
                       HiddenCase{Mechanism::eccentric_mass, 103}, HiddenCase{Mechanism::base_imperfection, 104},
-                      HiddenCase{Mechanism::vertical_excitation, 105}, HiddenCase{Mechanism::out_of_plane_loss, 107},
-                      HiddenCase{Mechanism::sensor_delay, 108}),
+                      HiddenCase{Mechanism::vertical_excitation, 105}, HiddenCase{Mechanism::floor_compliance, 106},
+                      HiddenCase{Mechanism::out_of_plane_loss, 107}, HiddenCase{Mechanism::sensor_delay, 108}),
     case_name);
-
-// Not found yet (see the top of this file); run with --gtest_also_run_disabled_tests.
-INSTANTIATE_TEST_SUITE_P(DISABLED_NotYetFound, HiddenEffect,
-                         ::testing::Values(HiddenCase{Mechanism::floor_compliance, 106}),
-                         case_name);
 
 TEST(HiddenEffect, BaselineDataGiveNone) {
   const Diagnosis d = diagnose_synthetic({}, 109, false);

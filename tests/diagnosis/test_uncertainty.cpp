@@ -26,7 +26,7 @@ TEST(Uncertainty, EachJackknifeRefitLeavesOutOneTrainingTest) {
   DiagnosisOptions options;
   options.threads = 2;
   const std::vector<double> point = {0.33, 0.05, 1.2};
-  const PointEvaluation e = evaluate_point(set, {}, point, options);
+  const PointEvaluation e = evaluate_point(set, {}, point, {}, options);
   ASSERT_GE(set.training.size(), 3u);
   for (std::size_t k = 0; k < set.training.size(); ++k) {
     double others = 0.0;
