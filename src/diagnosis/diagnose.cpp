@@ -135,10 +135,13 @@ double error_of(const std::vector<double>& loss, const Yardstick& yardstick, con
 Judged judge_at(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant,
                 const std::vector<double>& point, const std::vector<double>& standard_error,
                 const DiagnosisOptions& options) {
-  std::vector<int> all(set.tests.size());
-  std::iota(all.begin(), all.end(), 0);
+  // Every test as the fits see it, but the held-out ones when they are judged as predictions.
+  std::vector<int> as_fitted;
+  for (std::size_t t = 0; t < set.tests.size(); ++t) {
+    if (standard_error.empty() || !set.is_heldout(t)) as_fitted.push_back(static_cast<int>(t));
+  }
   Judged judged;
-  (void)objective_over(set, yardstick, variant, all, {point}, options, &judged);
+  (void)objective_over(set, yardstick, variant, as_fitted, {point}, options, &judged);
   if (!standard_error.empty()) {
     Yardstick predictive = yardstick;
     add_fit_spread(predictive.references, set.tests, set.heldout, variant, point, standard_error, kFitSpreadDraws,
@@ -272,21 +275,19 @@ ModelFit switched_off(const ModelFit& extended, const ModelVariant& variant) {
   m.name = variant.name();
   m.parameters = variant.parameters();
   std::vector<double> x = variant.reference();
+  // Its held-out tests were judged as the model it extends: its errors, none for the mechanism's.
+  std::vector<double> error(m.parameters.size(), 0.0);
+  const bool has_error = !extended.heldout_standard_error.empty();
   for (std::size_t j = 0; j < m.parameters.size(); ++j) {
     for (std::size_t i = 0; i < extended.parameters.size(); ++i) {
-      if (m.parameters[j].name == extended.parameters[i].name) x[j] = extended.fit.best[i];
+      if (m.parameters[j].name != extended.parameters[i].name) continue;
+      x[j] = extended.fit.best[i];
+      if (has_error) error[j] = extended.heldout_standard_error[i];
     }
   }
   m.fit.best = x;
   m.fit.standard_error.clear();
-  // Judged as the model it extends: its errors, and none for the mechanism's parameters.
-  std::vector<double> error(m.parameters.size(), 0.0);
-  for (std::size_t j = 0; j < m.parameters.size(); ++j) {
-    for (std::size_t i = 0; i < extended.parameters.size() && i < extended.heldout_standard_error.size(); ++i) {
-      if (m.parameters[j].name == extended.parameters[i].name) error[j] = extended.heldout_standard_error[i];
-    }
-  }
-  m.heldout_standard_error = extended.heldout_standard_error.empty() ? std::vector<double>{} : error;
+  m.heldout_standard_error = has_error ? error : std::vector<double>{};
   m.fit.uncertainty_note = "the fit did not improve on the model it extends: the mechanism is switched off";
   m.bic = bic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
   m.aic = aic_of(m.fit.objective, m.training_residual_count, m.parameters.size());

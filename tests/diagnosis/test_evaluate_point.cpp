@@ -54,14 +54,18 @@ double value_of(const SyntheticTruth& truth, const std::string& name) {
   throw std::logic_error("no true value of " + name);
 }
 
+// The baseline's parameters at the values the data were made with.
+std::vector<double> true_baseline_point(const SyntheticTruth& truth) {
+  return {value_of(truth, "friction"), value_of(truth, "damping_ratio"), value_of(truth, "stiffness_scale")};
+}
+
 TEST(EvaluatePoint, TheTrueValuesAgreeWithinTolerancesAndASlipperyFloorDoesNot) {
   const TestDirectory directory;
   SyntheticTruth truth;
   const MeasuredSet set = read_measured_set(synthetic_set(directory, 1, &truth));
   DiagnosisOptions options;
   options.threads = 2;
-  const std::vector<double> true_point = {value_of(truth, "friction"), value_of(truth, "damping_ratio"),
-                                          value_of(truth, "stiffness_scale")};
+  const std::vector<double> true_point = true_baseline_point(truth);
   const PointEvaluation at_truth = evaluate_point(set, {}, true_point, {}, options);
   EXPECT_EQ(at_truth.model, "baseline");
   ASSERT_EQ(at_truth.loss.size(), set.tests.size());
@@ -82,8 +86,7 @@ TEST(EvaluatePoint, MoreTableInputsChargeEachTestAtMostTwiceTheLogOfTheirNumberM
   MeasuredSet set = read_measured_set(synthetic_set(directory, 1, &truth));
   DiagnosisOptions options;
   options.threads = 2;
-  const std::vector<double> true_point = {value_of(truth, "friction"), value_of(truth, "damping_ratio"),
-                                          value_of(truth, "stiffness_scale")};
+  const std::vector<double> true_point = true_baseline_point(truth);
   const PointEvaluation one = evaluate_point(set, {}, true_point, {}, options);
   set.settings.input_realisations = 4;
   const PointEvaluation four = evaluate_point(set, {}, true_point, {}, options);
@@ -127,8 +130,7 @@ TEST(EvaluatePoint, HeldOutTestsAreJudgedWithTheSpreadOfTheFitsPrediction) {
   const MeasuredSet set = read_measured_set(synthetic_set(directory, 1, &truth));
   DiagnosisOptions options;
   options.threads = 2;
-  const std::vector<double> point = {value_of(truth, "friction"), value_of(truth, "damping_ratio"),
-                                     value_of(truth, "stiffness_scale")};
+  const std::vector<double> point = true_baseline_point(truth);
   const PointEvaluation alone = evaluate_point(set, {}, point, {}, options);
   const PointEvaluation certain = evaluate_point(set, {}, point, {0.0, 0.0, 0.0}, options);
   EXPECT_EQ(certain.loss, alone.loss);
