@@ -12,7 +12,7 @@
 // only to its standard errors: the prediction's own spread over draws of the fitted
 // parameters (x_i + se_i z_i, z standard normal) widens that test's tolerances for that model,
 // as a prediction interval adds the parameters' uncertainty to the measurement's (Seber & Wild,
-// "Nonlinear Regression", 1989, 5.1). A held-out sine that slides only when friction is below
+// "Nonlinear Regression", 1989, on prediction intervals). A held-out sine that slides only when friction is below
 // 0.32 is otherwise a miss of seven tolerances for a fit at 0.34 whose training tests cannot
 // tell 0.32 from 0.34 (tests/diagnosis/test_hidden_effects.cpp, the floor layer).
 
