@@ -11,10 +11,11 @@
 // A held-out test is judged by what a fitted model predicts, and a fit knows its parameters
 // only to its standard errors: the prediction's own spread over draws of the fitted
 // parameters (x_i + se_i z_i, z standard normal) widens that test's tolerances for that model,
-// as a prediction interval adds the parameters' uncertainty to the measurement's (Seber & Wild,
-// "Nonlinear Regression", 1989, on prediction intervals). A held-out sine that slides only when friction is below
-// 0.32 is otherwise a miss of seven tolerances for a fit at 0.34 whose training tests cannot
-// tell 0.32 from 0.34 (tests/diagnosis/test_hidden_effects.cpp, the floor layer).
+// as a prediction interval adds the parameters' uncertainty to the measurement's (Seber &
+// Wild, "Nonlinear Regression", 1989, on prediction intervals). A held-out sine that slides
+// only when friction is below 0.32 is otherwise a miss of seven tolerances for a fit at 0.34
+// whose training tests cannot tell 0.32 from 0.34 (tests/diagnosis/test_hidden_effects.cpp,
+// the floor layer).
 
 #include <algorithm>
 #include <cmath>
