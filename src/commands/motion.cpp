@@ -3,6 +3,7 @@
 #include <cmath>
 #include <iomanip>
 #include <iostream>
+#include <stdexcept>
 
 #include "commands/commands.h"
 #include "commands/validators.h"
@@ -45,11 +46,14 @@ void add_motion(CLI::App& app) {
     }
     if (time_step->count() > 0) read.time_step = options->time_step;
     motion::Record record = motion::read_record(options->file, read);
-    if ((pga->count() > 0 || pgv->count() > 0) && motion::peak_ground_acceleration(record) == 0.0)
-      throw InputError(options->file + ": every acceleration is zero; expected a record with motion to scale to a target");
     if (scale->count() > 0) record = motion::scaled(record, options->scale);
-    if (pga->count() > 0) record = motion::scaled_to_pga(record, units::gal_to_si(options->target_pga_gal));
-    if (pgv->count() > 0) record = motion::scaled_to_pgv(record, options->target_pgv_cm_s * units::kine);
+    try {
+      if (pga->count() > 0) record = motion::scaled_to_pga(record, units::gal_to_si(options->target_pga_gal));
+      if (pgv->count() > 0) record = motion::scaled_to_pgv(record, options->target_pgv_cm_s * units::kine);
+    } catch (const std::invalid_argument& e) {  // a record without motion has no factor to a target
+      throw InputError(options->file + ": " + e.what() + " (asked for by " +
+                       (pga->count() > 0 ? "--target-pga" : "--target-pgv") + ")");
+    }
     if (options->similarity != 1.0) record = motion::time_scaled(record, 1.0 / std::sqrt(options->similarity));
     const double pga = motion::peak_ground_acceleration(record);
     if (!std::isfinite(pga))

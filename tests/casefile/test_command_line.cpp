@@ -36,6 +36,19 @@ TEST_F(CommandLine, MalformedRecordLineNamesFileAndLine) {
   EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << "one message: " << o.output;
 }
 
+// A record without motion has no factor that brings it to a target: the file and the option
+// that asked are named, once.
+TEST_F(CommandLine, AZeroRecordCannotBeScaledToATarget) {
+  const auto record = write("still.csv", "t,a\n0.00,0\n0.01,0\n0.02,0\n0.03,0\n");
+  for (const char* option : {"--target-pga 300", "--target-pgv 20"}) {
+    const Outcome o = run_caskdem("motion " + record.string() + " --unit g " + option);
+    EXPECT_EQ(o.status, 2) << option;
+    EXPECT_THAT(o.output, HasSubstr(record.string() + ": the record's accelerations are all zero")) << option;
+    EXPECT_THAT(o.output, HasSubstr(std::string("(asked for by ") + std::string(option).substr(0, 12) + ")"));
+    EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << "one message: " << o.output;
+  }
+}
+
 TEST_F(CommandLine, BadCaseValueExitsNonZeroWithOneMessage) {
   const auto file = variant_of(testing::case_path("model-1-3-sine.toml"), "bad-case.toml", "kinetic = 0.45",
                                "kinetic = \"lots\"");
