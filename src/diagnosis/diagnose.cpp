@@ -6,6 +6,8 @@
 #include <chrono>
 #include <cmath>
 #include <numeric>
+#include <optional>
+#include <utility>
 
 namespace caskdem::diagnosis {
 
@@ -474,6 +476,59 @@ std::vector<double> training_objective_without(const MeasuredSet& set, const std
   return leave_one_out(set, yardstick, variant, options)(points, left_out);
 }
 
+namespace {
+
+struct SecondEffectSearch {
+  std::vector<CandidateScore> ranking;   // each other mechanism on top of the cause, by held-out gain
+  std::optional<ModelFit> refitted_cause;  // the cause's model refitted, when that fits better
+};
+
+// Each other mechanism fitted on top of the cause, from the cause's fit with the new mechanism
+// off. A pair that fits better only because its search found a better region of the cause's
+// own parameters must not pass for a second effect (on eccentric-mass data of seed 1001 the
+// pair with a sensor delay reached J 17 against the cause's 100, its delay 1.4 ms, its
+// damping ratio 0.032 where the cause's fit had stopped at 0.019 and the truth is 0.035): the
+// cause's model is refitted from every pair's values of its parameters, as the baseline is
+// from the candidates', and the pairs are scored against the better fit.
+SecondEffectSearch search_second_effect(const MeasuredSet& set, const Yardstick& yardstick, Mechanism first,
+                                        const ModelFit& cause, const DiagnosisOptions& options) {
+  // The values of `to`'s parameters: `from`'s where the names agree, else `to`'s reference.
+  const auto carried = [](const ModelFit& from, const ModelVariant& to) {
+    std::vector<double> values = to.reference();
+    for (std::size_t i = 0; i < from.parameters.size(); ++i) {
+      for (std::size_t j = 0; j < to.parameters().size(); ++j) {
+        if (to.parameters()[j].name == from.parameters[i].name) values[j] = from.fit.best[i];
+      }
+    }
+    return values;
+  };
+  const ModelVariant cause_variant(set.specimen, {first}, set.vertical_measured);
+  std::vector<std::pair<Mechanism, ModelFit>> pairs;  // the mechanism added, the pair's fit
+  std::vector<std::vector<double>> cause_starts = {cause.fit.best};
+  for (Mechanism m : all_mechanisms()) {
+    if (m == first) continue;
+    const ModelVariant variant(set.specimen, {first, m}, set.vertical_measured);
+    say(options, "fitting " + variant.name());
+    pairs.emplace_back(m, fit_variant(set, yardstick, variant, {carried(cause, variant)}, options));
+    cause_starts.push_back(carried(pairs.back().second, cause_variant));
+  }
+  SecondEffectSearch search;
+  say(options, "refitting " + cause_variant.name() + " from the pairs' values of its parameters");
+  ModelFit refitted = fit_variant(set, yardstick, cause_variant, cause_starts, options);
+  if (refitted.fit.objective < cause.fit.objective) search.refitted_cause = std::move(refitted);
+  const ModelFit& against = search.refitted_cause ? *search.refitted_cause : cause;
+  for (auto& [added, pair] : pairs) {
+    const ModelVariant variant(set.specimen, {first, added}, set.vertical_measured);
+    if (pair.fit.objective > against.fit.objective) pair = switched_off(against, variant);
+    search.ranking.push_back(score(set, added, std::move(pair), against, options));
+  }
+  std::stable_sort(search.ranking.begin(), search.ranking.end(),
+                   [](const CandidateScore& a, const CandidateScore& b) { return a.heldout_gain > b.heldout_gain; });
+  return search;
+}
+
+}  // namespace
+
 Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   Diagnosis d;
@@ -512,39 +567,32 @@ Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {
   }
   std::stable_sort(d.ranking.begin(), d.ranking.end(),
                    [](const CandidateScore& a, const CandidateScore& b) { return a.heldout_gain > b.heldout_gain; });
-  const auto cause = std::find_if(d.ranking.begin(), d.ranking.end(), [](const CandidateScore& c) { return c.significant; });
+  const auto significant = [](const CandidateScore& c) { return c.significant; };
+  auto cause = std::find_if(d.ranking.begin(), d.ranking.end(), significant);
+  if (cause != d.ranking.end() && options.look_for_second_effect) {
+    const Mechanism first = cause->mechanism;
+    SecondEffectSearch search = search_second_effect(set, yardstick, first, cause->model, options);
+    if (search.refitted_cause) {
+      d.cause_objective_before_refit = cause->model.fit.objective;
+      *cause = score(set, first, std::move(*search.refitted_cause), d.baseline, options);
+      std::stable_sort(d.ranking.begin(), d.ranking.end(),
+                       [](const CandidateScore& a, const CandidateScore& b) { return a.heldout_gain > b.heldout_gain; });
+      cause = std::find_if(d.ranking.begin(), d.ranking.end(), significant);
+    }
+    // The pairs were scored against the cause's best fit; they mean nothing on top of another cause.
+    if (cause != d.ranking.end() && cause->mechanism == first) {
+      d.second_ranking = std::move(search.ranking);
+      const auto second = std::find_if(d.second_ranking.begin(), d.second_ranking.end(), significant);
+      if (second != d.second_ranking.end()) d.second_cause = mechanism_name(second->mechanism);
+    }
+  }
   if (options.jackknife) {
     say(options, "standard errors of the baseline" + std::string(cause != d.ranking.end() ? " and the cause" : "") +
                      ": refitting without each training test in turn (jackknife)");
     add_jackknife(set, yardstick, d.baseline, options);
     if (cause != d.ranking.end()) add_jackknife(set, yardstick, cause->model, options);
   }
-  if (cause != d.ranking.end()) {
-    d.cause = mechanism_name(cause->mechanism);
-    if (options.look_for_second_effect) {
-      const ModelFit& first = cause->model;
-      for (Mechanism m : all_mechanisms()) {
-        if (m == cause->mechanism) continue;
-        const ModelVariant variant(set.specimen, {cause->mechanism, m}, set.vertical_measured);
-        say(options, "fitting " + variant.name());
-        // Start from the cause's fit, the new mechanism off.
-        std::vector<double> reference = variant.reference();
-        for (std::size_t i = 0; i < first.parameters.size(); ++i) {
-          for (std::size_t j = 0; j < variant.parameters().size(); ++j) {
-            if (variant.parameters()[j].name == first.parameters[i].name) reference[j] = first.fit.best[i];
-          }
-        }
-        ModelFit fitted = fit_variant(set, yardstick, variant, {reference}, options);
-        if (fitted.fit.objective > first.fit.objective) fitted = switched_off(first, variant);
-        d.second_ranking.push_back(score(set, m, std::move(fitted), first, options));
-      }
-      std::stable_sort(d.second_ranking.begin(), d.second_ranking.end(),
-                       [](const CandidateScore& a, const CandidateScore& b) { return a.heldout_gain > b.heldout_gain; });
-      const auto second = std::find_if(d.second_ranking.begin(), d.second_ranking.end(),
-                                       [](const CandidateScore& c) { return c.significant; });
-      if (second != d.second_ranking.end()) d.second_cause = mechanism_name(second->mechanism);
-    }
-  }
+  if (cause != d.ranking.end()) d.cause = mechanism_name(cause->mechanism);
   d.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return d;
 }

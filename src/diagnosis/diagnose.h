@@ -22,9 +22,12 @@
 //     held-out gain >= minimum_gain, BIC lower by at least -maximum_bic_delta, and the held-out
 //     error lower on at least half of the held-out tests. None significant: "none", the model
 //     disagrees with the data no more than noise explains. Then each remaining mechanism is
-//     fitted on top of the cause, and a significant one is reported as a second effect.
+//     fitted on top of the cause, the cause's model is refitted from those pairs' values of its
+//     parameters (a pair must not gain by a better fit of the cause alone), and a pair
+//     significant against the better fit of the cause is reported as a second effect.
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -90,6 +93,9 @@ struct Diagnosis {
   ModelFit baseline;
   std::vector<CandidateScore> ranking;         // by held-out gain
   std::vector<CandidateScore> second_ranking;  // on top of the cause
+  // The cause's training objective before the search for a second effect refitted it from
+  // the pairs' values of its parameters to a better one; absent when it was not refitted.
+  std::optional<double> cause_objective_before_refit;
   std::vector<StructureRow> structure;
   double wall_seconds = 0.0;
 };
