@@ -49,6 +49,8 @@ std::vector<double> parse_list(const std::string& text, const std::string& optio
 
 // More frequencies than this is a step typed in the wrong unit (a sweep runs each amplitude at each).
 constexpr double kMostFrequencies = 10000;
+// Longer shaking than this (s) is a count typed in the wrong unit, as for a case file's sine.
+constexpr double kLongestShaking = 1e5;
 
 }  // namespace
 
@@ -76,6 +78,14 @@ void add_sweep(CLI::App& app) {
       throw InputError("--frequencies: expected first,last,step with 0 < first <= last, step > 0 and at most " +
                        number_text(kMostFrequencies) + " frequencies, got \"" + options->frequencies + "\"");
     }
+    if (options->ramp_cycles > 0.5 * options->cycles) {
+      throw InputError("--ramp-cycles " + number_text(options->ramp_cycles) + ": expected at most half of --cycles (" +
+                       number_text(options->cycles) + "): the ramps up and down must fit in the shaking");
+    }
+    if (options->cycles / range[0] > kLongestShaking) {
+      throw InputError("--cycles " + number_text(options->cycles) + ": expected at most " + number_text(kLongestShaking) +
+                       " s of shaking at the lowest frequency (" + number_text(range[0]) + " Hz)");
+    }
     const std::filesystem::path directory =
         options->out.empty() ? std::filesystem::path("results") / (base.name + "-sweep") : std::filesystem::path(options->out);
     prepare_output_directory(directory);
@@ -89,16 +99,20 @@ void add_sweep(CLI::App& app) {
               << " (the DEM's free vibration)\n";
 
     std::vector<SweepPoint> points;
+    std::vector<std::unique_ptr<motion::TableMotion>> motions;  // made here: nothing may throw in the parallel loop
     for (double a : amplitudes) {
-      for (double f : frequencies) points.push_back({units::cm_to_m(a), f});
+      for (double f : frequencies) {
+        points.push_back({units::cm_to_m(a), f});
+        motions.push_back(motion::make_sine(points.back().amplitude, f, options->cycles, options->ramp_cycles));
+      }
     }
     const LaneParameters<double> lane = lane_parameters(model, base.parameters);
 #pragma omp parallel for schedule(dynamic)
     for (std::size_t i = 0; i < points.size(); ++i) {
       SweepPoint& p = points[i];
-      const auto motion = motion::make_sine(p.amplitude, p.frequency, options->cycles, options->ramp_cycles);
+      const motion::TableMotion* motion = motions[i].get();
       const double duration = motion->duration() + base.settle_time;
-      const RunResult run = simulate(model, lane, rest_state(model, lane), {motion.get(), nullptr}, {duration, 0.0});
+      const RunResult run = simulate(model, lane, rest_state(model, lane), {motion, nullptr}, {duration, 0.0});
       p.dem_rotation = run.summary.max_abs_rotation;
       p.dem_tipped = run.summary.tipped_over;
       theory::RockingOptions rocking;

@@ -106,6 +106,11 @@ TEST_F(CommandLine, BadOptionValuesExitTwoNamingTheOption) {
            {"motion none.csv --target-pga nan", "--target-pga: expected a finite number above zero"},
            {"calibrate none.toml --target nan", "--target: expected a restitution from 0.01 to 0.9999"},
            {"similarity 0", "scale: expected a finite number above zero, got \"0\""},
+           // Both aborted the program, the first in the parallel loop, the second after hours.
+           {"sweep " + testing::case_path("model-1-3-sine.toml") + " --out " + out + " --cycles 3",
+            "--ramp-cycles 2: expected at most half of --cycles (3)"},
+           {"sweep " + testing::case_path("model-1-3-sine.toml") + " --out " + out + " --cycles 1e9",
+            "--cycles 1e+09: expected at most 100000 s of shaking"},
            {"run", "case is required"},
        }) {
     const Outcome o = run_caskdem(c.arguments);
