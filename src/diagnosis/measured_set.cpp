@@ -1,11 +1,13 @@
 #include "diagnosis/measured_set.h"
 
 #include <algorithm>
+#include <stdexcept>
 #include <string>
 #include <string_view>
 
 #include "core/error.h"
 #include "core/text.h"
+#include "diagnosis/mechanisms.h"
 
 namespace caskdem::diagnosis {
 
@@ -31,6 +33,14 @@ Case read_specimen(const std::filesystem::path& specimen, DiagnosisSettings* set
   c.name = specimen.parent_path().filename().string();
   c.title = root.optional_string("title").value_or(c.name);
   read_cask_and_contact(root, c);
+  // Each test lasts as long as its CSV: a duration here would be silently unused.
+  if (root.has_table("integration")) {
+    TableReader t = root.table("integration");
+    for (const char* key : {"duration", "settle_time"}) {
+      if (t.has(key)) t.fail(key, "not used by a measured-data directory (each test lasts as long as its CSV); expected "
+                                  "only safety_factor in [integration]");
+    }
+  }
   if (c.model.friction_law != FrictionLaw::constant) {
     root.fail("friction", "the diagnosis starts from constant friction (law = \"constant\"); velocity-dependent "
                           "friction is one of the mechanisms it tests");
@@ -106,6 +116,18 @@ MeasuredSet read_measured_set(const std::filesystem::path& directory) {
     throw InputError(located(specimen, 0, "the tests must split into a training and a held-out part; got " +
                                               std::to_string(set.training.size()) + " and " +
                                               std::to_string(set.heldout.size())));
+  }
+  // A specimen that no model can be built from (a time step beyond the stability limit, a
+  // mechanism its section cannot take) is refused now, naming its file, not minutes into a fit.
+  std::vector<std::vector<Mechanism>> variants = {{}};
+  for (Mechanism m : all_mechanisms()) variants.push_back({m});
+  for (const std::vector<Mechanism>& mechanisms : variants) {
+    try {
+      (void)ModelVariant(set.specimen, mechanisms, set.vertical_measured);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(located(specimen, 0, std::string(e.what()) +
+                                                (mechanisms.empty() ? "" : " (with " + mechanism_name(mechanisms[0]) + ")")));
+    }
   }
   return set;
 }

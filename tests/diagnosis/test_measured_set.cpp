@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 #include <ostream>
+#include <regex>
 #include <string>
 
 #include <gmock/gmock.h>
@@ -98,6 +99,26 @@ TEST_F(MeasuredSetDirectory, EveryTestHeldOutLeavesNothingToFit) {
   write("run_a.csv", test_csv());
   write("run_b.csv", test_csv());
   EXPECT_THAT(error_of(), AllOf(HasSubstr("specimen.toml"), HasSubstr("training"), HasSubstr("got 0 and 2")));
+}
+
+// A step beyond the explicit scheme's stability limit (dt = f_s 2 sqrt(m/k), stable below
+// f_s of about 0.5 undamped, less with damping) is refused when the directory is read, naming
+// specimen.toml, not minutes into a fit.
+TEST_F(MeasuredSetDirectory, AnUnstableTimeStepIsRefusedWithTheSpecimen) {
+  const std::string unstable = std::regex_replace(kSpecimen, std::regex("safety_factor = [0-9.]+"), "safety_factor = 1");
+  ASSERT_NE(unstable, kSpecimen);
+  write("specimen.toml", unstable);
+  write("run_a.csv", test_csv());
+  write("run_b.csv", test_csv());
+  EXPECT_THAT(error_of(), AllOf(HasSubstr("specimen.toml"), HasSubstr("stability limit")));
+}
+
+// Each measured test lasts as long as its CSV: a duration in specimen.toml would go unused.
+TEST_F(MeasuredSetDirectory, ADurationInTheSpecimenIsRefused) {
+  write("specimen.toml", std::regex_replace(kSpecimen, std::regex("\\[integration\\]\n"), "[integration]\nduration = \"5 s\"\n"));
+  write("run_a.csv", test_csv());
+  write("run_b.csv", test_csv());
+  EXPECT_THAT(error_of(), AllOf(HasSubstr("specimen.toml"), HasSubstr("integration.duration"), HasSubstr("not used")));
 }
 
 // A [diagnosis] setting outside its range: the line, the key it names, what was expected.
