@@ -169,6 +169,9 @@ void read_damping(TableReader& root, Case& c) {
 // Longer than a day is a value in the wrong unit: no test or earthquake lasts that long, and the
 // steps of such a run would overflow their count.
 constexpr double kLongestDuration = 1e5;  // s
+// A table acceleration above this (m/s^2, about 100 g) is a value in the wrong unit: shaking
+// tables and earthquakes stay within a few g.
+constexpr double kLargestTableAcceleration = 1000.0;
 // A synthetic record's sampling: at least 1e-5 s, and from ten samples to 1e8 (800 MB).
 constexpr double kSmallestRecordStep = 1e-5;  // s
 constexpr double kFewestRecordSamples = 10.0;
@@ -215,6 +218,11 @@ MotionSpec read_motion(TableReader& t) {
     m.cycles = t.positive("cycles", t.quantity("cycles", Dimension::dimensionless));
     m.ramp_cycles = t.non_negative("ramp_cycles", t.quantity_or("ramp_cycles", Dimension::dimensionless, 2.0));
     if (2.0 * m.ramp_cycles > m.cycles) t.fail("ramp_cycles", "the ramps up and down must fit in the cycles");
+    const double peak_acceleration = m.amplitude * std::pow(2.0 * std::numbers::pi * m.frequency, 2);
+    if (!(peak_acceleration <= kLargestTableAcceleration))
+      t.fail("frequency", "expected a sine whose peak acceleration A (2 pi f)^2 is at most " +
+                              number_text(kLargestTableAcceleration) + " m/s^2 (about 100 g), got " +
+                              number_text(peak_acceleration) + " m/s^2");
     if (m.cycles / m.frequency > kLongestDuration)
       t.fail("cycles", "expected at most " + number_text(kLongestDuration) + " s of shaking (cycles / frequency), got " +
                            number_text(m.cycles / m.frequency) + " s");
@@ -223,7 +231,9 @@ MotionSpec read_motion(TableReader& t) {
     const std::string shape = t.choice("shape", {"half_sine", "one_sine", "rectangular"});
     m.shape = *motion::parse_pulse_shape(shape);
     m.pulse_amplitude = t.quantity("amplitude", Dimension::acceleration);
-    if (m.pulse_amplitude == 0.0) t.fail("amplitude", "expected a non-zero acceleration");
+    if (m.pulse_amplitude == 0.0 || !(std::abs(m.pulse_amplitude) <= kLargestTableAcceleration))
+      t.fail("amplitude", "expected a non-zero acceleration of at most " + number_text(kLargestTableAcceleration) +
+                              " m/s^2 (about 100 g)");
     m.pulse_duration = positive_duration(t, "duration", t.quantity("duration", Dimension::time));
   } else if (kind == "synthetic") {
     m.kind = MotionSpec::Kind::synthetic;

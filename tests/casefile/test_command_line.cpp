@@ -49,6 +49,26 @@ TEST_F(CommandLine, AZeroRecordCannotBeScaledToATarget) {
   }
 }
 
+// Values in the wrong unit that passed every key's own check: a density a thousand orders of
+// magnitude off ran one step of 6e144 s and reported "completed"; a pulse of 1e308 g stopped
+// with a library message naming neither file nor key.
+TEST_F(CommandLine, ValuesInTheWrongUnitAreRefusedBeforeTheRun) {
+  struct Case {
+    std::string from, to, message;
+  };
+  for (const Case& c : std::vector<Case>{
+           {"density = \"8.743 g/cm^3\"", "density = \"1e300 g/cm^3\"", "expected 1 to 1e+10"},
+           {"amplitude = \"0.35 g\"", "amplitude = \"1e308 g\"", "key motion.amplitude: expected a non-zero acceleration of at most 1000 m/s^2"},
+       }) {
+    const auto file = variant_of(testing::case_path("default-pulse.toml"), "wrong-unit.toml", c.from, c.to);
+    const Outcome o = run_caskdem("run " + file.string() + " --out " + (dir_ / "never").string());
+    EXPECT_EQ(o.status, 2) << c.to << "\n" << o.output;
+    EXPECT_THAT(o.output, HasSubstr(file.filename().string())) << c.to;
+    EXPECT_THAT(o.output, HasSubstr(c.message)) << c.to;
+    EXPECT_FALSE(std::filesystem::exists(dir_ / "never" / "summary.json")) << c.to;
+  }
+}
+
 TEST_F(CommandLine, BadCaseValueExitsNonZeroWithOneMessage) {
   const auto file = variant_of(testing::case_path("model-1-3-sine.toml"), "bad-case.toml", "kinetic = 0.45",
                                "kinetic = \"lots\"");
