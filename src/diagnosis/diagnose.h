@@ -24,7 +24,8 @@
 //     disagrees with the data no more than noise explains. Then each remaining mechanism is
 //     fitted on top of the cause, the cause's model is refitted from those pairs' values of its
 //     parameters (a pair must not gain by a better fit of the cause alone), and a pair
-//     significant against the better fit of the cause is reported as a second effect.
+//     significant against the better fit of the cause is reported as a second effect. The
+//     cause itself is never changed by this second look.
 
 #include <functional>
 #include <optional>
@@ -93,9 +94,10 @@ struct Diagnosis {
   ModelFit baseline;
   std::vector<CandidateScore> ranking;         // by held-out gain
   std::vector<CandidateScore> second_ranking;  // on top of the cause
-  // The cause's training objective before the search for a second effect refitted it from
-  // the pairs' values of its parameters to a better one; absent when it was not refitted.
-  std::optional<double> cause_objective_before_refit;
+  // The cause's model refitted from the pairs' values of its parameters, when that fits the
+  // training tests better than the cause's own fit: what the pairs are scored against. The
+  // cause's score in `ranking` stays that of its own fit.
+  std::optional<ModelFit> cause_refit;
   std::vector<StructureRow> structure;
   double wall_seconds = 0.0;
 };

@@ -167,13 +167,9 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   }
   j["second_ranking"] = nlohmann::json::array();
   for (const CandidateScore& c : d.second_ranking) j["second_ranking"].push_back(candidate_json(c));
-  // Present when the search for a second effect found a better fit of the cause's own model
-  // (the pairs are scored against it, and the ranking shows it).
-  j["cause_refitted"] = nlohmann::json(nullptr);
-  if (chosen && d.cause_objective_before_refit) {
-    j["cause_refitted"] = {{"training_objective_before", *d.cause_objective_before_refit},
-                           {"training_objective", chosen->model.fit.objective}};
-  }
+  // Present when the search for a second effect found a better fit of the cause's own model:
+  // the pairs of second_ranking are scored against it; the cause's score stays its own fit's.
+  j["cause_refitted"] = d.cause_refit ? fit_json(*d.cause_refit) : nlohmann::json(nullptr);
   for (const StructureRow& r : d.structure) {
     j["residual_structure"].push_back({{"variable", r.variable}, {"residual", r.residual}, {"statistic", r.statistic},
                                        {"statistic_name", r.statistic_name}, {"points_to", r.points_to}});
@@ -259,10 +255,11 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   }
   if (!d.second_ranking.empty()) {
     md << "## A second effect on top of " << d.cause << "\n\n";
-    if (d.cause_objective_before_refit) {
+    if (d.cause_refit) {
       md << "Refitted from the pairs' values of its parameters, " << d.cause << " alone fits the training tests "
-         << "better (J " << number(chosen->model.fit.objective, 4) << " against " << number(*d.cause_objective_before_refit, 4)
-         << " at its first fit): the ranking above shows the better fit, and each pair is scored against it.\n\n";
+         << "better (J " << number(d.cause_refit->fit.objective, 4) << " against " << number(chosen->model.fit.objective, 4)
+         << " at its own fit): each pair is scored against that refit, so that a pair does not gain by a better fit "
+         << "of the cause's own parameters (`cause_refitted` in diagnosis.json).\n\n";
     }
     md << "| mechanism | held-out gain | BIC delta | significant |\n"
        << "|---|---|---|---|\n";
