@@ -34,7 +34,7 @@ struct Yardstick {
   std::vector<int> predictable_training;          // the training tests that are predictable
 };
 
-Yardstick yardstick_of(const MeasuredSet& set) {
+Yardstick yardstick_of(const MeasuredSet& set, const DiagnosisOptions& options) {
   const ModelVariant baseline(set.specimen, {}, set.vertical_measured);
   Yardstick y;
   for (std::size_t t = 0; t < set.tests.size(); ++t) {
@@ -44,7 +44,7 @@ Yardstick yardstick_of(const MeasuredSet& set) {
   std::vector<std::vector<double>> measurement_tolerance;
   for (const TestReference& r : y.references) measurement_tolerance.push_back(r.tolerance);
   add_predictability(y.references, set.tests, baseline, baseline.reference(), kPredictabilityRealisations,
-                     set.settings.seed);
+                     set.settings.seed, options.threads);
   for (int t : set.training) {
     const std::vector<double>& widened = y.references[t].tolerance;
     double log_widening = 0.0;
@@ -147,7 +147,7 @@ Judged judge_at(const MeasuredSet& set, const Yardstick& yardstick, const ModelV
   if (!standard_error.empty()) {
     Yardstick predictive = yardstick;
     add_fit_spread(predictive.references, set.tests, set.heldout, variant, point, standard_error, kFitSpreadDraws,
-                   set.settings.seed);
+                   set.settings.seed, options.threads);
     Judged heldout;
     (void)objective_over(set, predictive, variant, set.heldout, {point}, options, &heldout);
     for (int t : set.heldout) {
@@ -429,7 +429,7 @@ ModelFit fit_baseline(const MeasuredSet& set, const Yardstick& yardstick, const 
 }  // namespace
 
 ModelFit calibrate_baseline(const MeasuredSet& set, const DiagnosisOptions& options) {
-  const Yardstick yardstick = yardstick_of(set);
+  const Yardstick yardstick = yardstick_of(set, options);
   ModelFit fit = fit_baseline(set, yardstick, options);
   if (options.jackknife) {
     say(options, "standard errors: refitting without each of the " + std::to_string(set.training.size()) +
@@ -456,7 +456,7 @@ PointEvaluation evaluate_point(const MeasuredSet& set, const std::vector<Mechani
   e.model = variant.name();
   e.parameters = variant.parameters();
   e.point = point;
-  const Yardstick yardstick = yardstick_of(set);
+  const Yardstick yardstick = yardstick_of(set, options);
   Judged judged = judge_at(set, yardstick, variant, point, heldout_standard_error, options);
   e.residuals = std::move(judged.residuals);
   e.loss = std::move(judged.loss);
@@ -472,7 +472,7 @@ std::vector<double> training_objective_without(const MeasuredSet& set, const std
                                                const std::vector<std::vector<double>>& points, int left_out,
                                                const DiagnosisOptions& options) {
   const ModelVariant variant(set.specimen, mechanisms, set.vertical_measured);
-  const Yardstick yardstick = yardstick_of(set);
+  const Yardstick yardstick = yardstick_of(set, options);
   return leave_one_out(set, yardstick, variant, options)(points, left_out);
 }
 
@@ -537,7 +537,7 @@ Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {
   Diagnosis d;
   say(options, "judging how predictable each test is (" + std::to_string(kPredictabilityRealisations) +
                    " simulations per test with fresh input noise)");
-  const Yardstick yardstick = yardstick_of(set);
+  const Yardstick yardstick = yardstick_of(set, options);
   d.baseline = fit_baseline(set, yardstick, options);
   const ModelVariant baseline_variant(set.specimen, {}, set.vertical_measured);
   d.structure = residual_structure(set, yardstick.references, d.baseline, baseline_variant.model(),

@@ -73,7 +73,8 @@ TestReference reference_of(const MeasuredTest& test, double stability_angle);
 // at parameters x whose table input carries fresh noise at the level estimated from the
 // channel (src/diagnosis/predictability.cpp).
 void add_predictability(std::vector<TestReference>& references, const std::vector<MeasuredTest>& tests,
-                        const ModelVariant& variant, const std::vector<double>& x, int realisations, std::uint64_t seed);
+                        const ModelVariant& variant, const std::vector<double>& x, int realisations, std::uint64_t seed,
+                        int threads = 0);  // threads: 0 for OpenMP's default
 
 // Adds to the tolerances of the tests `which` the spread of their measures over `draws`
 // simulations of the model at its fitted point x moved by its standard errors (x_i + se_i z_i,
@@ -82,7 +83,7 @@ void add_predictability(std::vector<TestReference>& references, const std::vecto
 // the tolerances stay.
 void add_fit_spread(std::vector<TestReference>& references, const std::vector<MeasuredTest>& tests,
                     const std::vector<int>& which, const ModelVariant& variant, const std::vector<double>& x,
-                    const std::vector<double>& standard_error, int draws, std::uint64_t seed);
+                    const std::vector<double>& standard_error, int draws, std::uint64_t seed, int threads = 0);
 
 // The table inputs a test is judged with: the measured channel first, then `count - 1` copies
 // with fresh noise at the level estimated from the channel (the same draws at every point a

@@ -17,6 +17,8 @@
 // whose training tests cannot tell 0.32 from 0.34 (tests/diagnosis/test_hidden_effects.cpp,
 // the floor layer).
 
+#include <omp.h>
+
 #include <algorithm>
 #include <cmath>
 #include <exception>
@@ -106,9 +108,10 @@ void widen_by_spread(TestReference& reference, const MeasuredTest& test, std::si
 }  // namespace
 
 void add_predictability(std::vector<TestReference>& references, const std::vector<MeasuredTest>& tests,
-                        const ModelVariant& variant, const std::vector<double>& x, int realisations, std::uint64_t seed) {
+                        const ModelVariant& variant, const std::vector<double>& x, int realisations, std::uint64_t seed,
+                        int threads) {
   std::exception_ptr failure;  // an exception may not leave an OpenMP region: rethrown after it
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads > 0 ? threads : omp_get_max_threads())
   for (std::size_t t = 0; t < tests.size(); ++t) {
     try {
       widen_by_spread(references[t], tests[t], t, variant, x, realisations, seed);
@@ -122,7 +125,7 @@ void add_predictability(std::vector<TestReference>& references, const std::vecto
 
 void add_fit_spread(std::vector<TestReference>& references, const std::vector<MeasuredTest>& tests,
                     const std::vector<int>& which, const ModelVariant& variant, const std::vector<double>& x,
-                    const std::vector<double>& standard_error, int draws, std::uint64_t seed) {
+                    const std::vector<double>& standard_error, int draws, std::uint64_t seed, int threads) {
   if (standard_error.size() != x.size() || draws < 2) return;  // no uncertainty known: the point alone
   // The same draws for every test (counter "test" 0xfffe), all of them lanes of one run per test.
   std::vector<std::vector<double>> points(static_cast<std::size_t>(draws), x);
@@ -134,7 +137,7 @@ void add_fit_spread(std::vector<TestReference>& references, const std::vector<Me
   }
   const std::size_t measures = measure_names().size();
   std::exception_ptr failure;
-#pragma omp parallel for schedule(dynamic, 1)
+#pragma omp parallel for schedule(dynamic, 1) num_threads(threads > 0 ? threads : omp_get_max_threads())
   for (std::size_t k = 0; k < which.size(); ++k) {
     try {
       const int t = which[k];
