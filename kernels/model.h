@@ -14,7 +14,7 @@
 
 namespace caskdem {
 
-inline constexpr int kMaxCorners = 8;
+inline constexpr int kMaxCorners = 16;  // a distributed footprint's points (model/section.h), or a polygon's corners
 inline constexpr int kMaxFrictionTable = 32;
 inline constexpr int kPeakCount = 8;  // half-cycle peaks of |omega| a lane remembers
 

@@ -73,8 +73,24 @@ void read_cask(TableReader& root, Case& c) {
       cylinder.height = t.positive("height", t.quantity("height", Dimension::length));
       cylinder.mass = mass ? *mass : *density * std::numbers::pi / 4.0 * cylinder.diameter * cylinder.diameter * cylinder.height;
       cylinder.inertia = inertia;
-      cylinder.rule = t.choice("half_width", {"gyration", "radius"}, "gyration") == "radius" ? HalfWidthRule::radius
-                                                                                          : HalfWidthRule::gyration;
+      // Two corners at a half-width rule's b, or a distributed circular footprint (model/section.h).
+      const bool distributed = t.choice("footprint", {"corners", "distributed"}, "corners") == "distributed";
+      const std::string default_rule = distributed ? "radius" : "gyration";
+      cylinder.rule = t.choice("half_width", {"gyration", "radius"}, default_rule) == "radius" ? HalfWidthRule::radius
+                                                                                              : HalfWidthRule::gyration;
+      if (distributed) {
+        if (cylinder.rule != HalfWidthRule::radius) {
+          t.fail("half_width", "a distributed footprint pivots on the rim: leave half_width out or give \"radius\"");
+        }
+        const long points = t.optional_integer("footprint_points").value_or(kDefaultFootprintPoints);
+        if (points < kMinFootprintPoints || points > kMaxCorners) {
+          t.fail("footprint_points", "expected " + std::to_string(kMinFootprintPoints) + " to " +
+                                         std::to_string(kMaxCorners) + " contact points across the base");
+        }
+        cylinder.footprint_points = static_cast<int>(points);
+      } else if (t.has("footprint_points")) {
+        t.fail("footprint_points", "only a distributed footprint (footprint = \"distributed\") has contact points");
+      }
       cylinder.eccentricity = t.quantity_or("eccentricity", Dimension::length, 0.0);
       c.model.section = cylinder_section(cylinder, rounding);
     } else {

@@ -84,7 +84,12 @@ Model build_model(const ModelSpec& spec, const RealisationParameters& nominal) {
   }
   std::vector<ContactCorner> all = corners;
   Model m;
-  if (spec.base_centre_contact) {
+  if (spec.base_centre_contact && spec.section.footprint_points > 0) {
+    // A distributed footprint with an odd number of points has one at the base centre already.
+    const int n = spec.section.footprint_points;
+    if (n % 2 == 0) throw std::invalid_argument("a convex base on a distributed footprint needs an odd number of points");
+    m.camber_corner = n / 2;
+  } else if (spec.base_centre_contact) {
     // The two corners of the base edge (standing on the floor) hand half their contact length
     // to a corner midway between them.
     std::vector<int> base;

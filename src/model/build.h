@@ -35,7 +35,7 @@ struct ModelSpec {
   double gravity = units::standard_gravity;
   // Add a contact corner at the middle of the base edge, which a realisation's base_camber
   // lowers (a slightly convex base). The base's contact length is shared: half to the middle
-  // corner, a quarter to each end.
+  // corner, a quarter to each end. On a distributed footprint (odd N) its centre point is that corner.
   bool base_centre_contact = false;
 };
 

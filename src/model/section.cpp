@@ -8,6 +8,7 @@
 #include <string>
 
 #include "core/text.h"
+#include "kernels/model.h"
 
 namespace caskdem {
 
@@ -73,6 +74,7 @@ double polygon_inertia_about_centroid(const std::vector<Point>& v) {
 
 double equivalent_half_width(const Cylinder& cylinder) {
   const double r = 0.5 * cylinder.diameter;
+  if (cylinder.footprint_points > 0) return r;  // a distributed footprint pivots on the rim
   // Radius of gyration of a disc about its diameter: sqrt((pi r^4 / 4) / (pi r^2)) = r / 2.
   return cylinder.rule == HalfWidthRule::radius ? r : 0.5 * r;
 }
@@ -93,6 +95,18 @@ Section cylinder_section(const Cylinder& cylinder, double rounding) {
   s.base_area = std::numbers::pi * r * r;
   s.depth = s.base_area / (2.0 * b);
   s.rounding = rounding;
+  if (cylinder.footprint_points != 0) {
+    if (cylinder.footprint_points < kMinFootprintPoints || cylinder.footprint_points > kMaxCorners) {
+      throw std::invalid_argument("a distributed footprint needs " + std::to_string(kMinFootprintPoints) + " to " +
+                                  std::to_string(kMaxCorners) + " contact points, not " +
+                                  std::to_string(cylinder.footprint_points));
+    }
+    if (cylinder.rule != HalfWidthRule::radius) {
+      throw std::invalid_argument("a distributed footprint pivots on the rim: its half-width is the radius, not the "
+                                  "gyration rule's r/2");
+    }
+    s.footprint_points = cylinder.footprint_points;
+  }
   if (std::abs(cylinder.eccentricity) >= b) throw std::invalid_argument("the eccentricity puts the centre of mass outside the base");
   if (!(rounding >= 0.0) || rounding >= 0.5 * std::min(2.0 * b, cylinder.height)) {
     throw std::invalid_argument("the rounding radius must be non-negative and smaller than half the section's width");
@@ -155,6 +169,47 @@ std::vector<Point> rounded_corner_centres(const Section& section) {
   return centres;
 }
 
+namespace {
+
+// The distributed footprint's contacts (section.h): the base's two rounded corners and N - 2
+// points between their arc centres, each weighted by its strip of the circle of radius b.
+std::vector<ContactCorner> distributed_footprint(const Section& section, const ContactCorner& left,
+                                                 const ContactCorner& right) {
+  const int n = section.footprint_points;
+  const double b = 0.5 * (section.outline[1].x - section.outline[0].x);
+  std::vector<double> x(n);
+  for (int i = 0; i < n; ++i) x[i] = left.arc_centre.x + (right.arc_centre.x - left.arc_centre.x) * i / (n - 1);
+  // Area of the circle between -b and u: the integral of its chord, 2 sqrt(b^2 - x^2).
+  const auto area_to = [b](double u) {
+    const double v = std::clamp(u / b, -1.0, 1.0);
+    return b * b * (v * std::sqrt(1.0 - v * v) + std::asin(v));
+  };
+  std::vector<double> weight(n);
+  double s0 = 0.0, s2 = 0.0, s4 = 0.0;
+  for (int i = 0; i < n; ++i) {
+    const double from = i == 0 ? -b : 0.5 * (x[i - 1] + x[i]);
+    const double to = i == n - 1 ? b : 0.5 * (x[i] + x[i + 1]);
+    weight[i] = area_to(to) - area_to(from);
+    s0 += weight[i];
+    s2 += weight[i] * x[i] * x[i];
+    s4 += weight[i] * x[i] * x[i] * x[i] * x[i];
+  }
+  // (a + c x^2) makes both moments exact: a s0 + c s2 = A, a s2 + c s4 = I_base.
+  const double area = std::numbers::pi * b * b, second_moment = 0.25 * std::numbers::pi * b * b * b * b;
+  const double determinant = s0 * s4 - s2 * s2;
+  const double a = (area * s4 - second_moment * s2) / determinant;
+  const double c = (s0 * second_moment - s2 * area) / determinant;
+  std::vector<ContactCorner> points;
+  for (int i = 0; i < n; ++i) {
+    const double w = weight[i] * (a + c * x[i] * x[i]);
+    if (!(w > 0.0)) throw std::invalid_argument("the distributed footprint's points cannot carry the base's moments");
+    points.push_back({{x[i], left.arc_centre.y}, w / section.depth, left.rest_gap});
+  }
+  return points;
+}
+
+}  // namespace
+
 std::vector<ContactCorner> contact_corners(const Section& section) {
   const std::vector<Point>& v = section.outline;
   const std::size_t n = v.size();
@@ -176,6 +231,10 @@ std::vector<ContactCorner> contact_corners(const Section& section) {
     corners.push_back({centres[i], share[i], centres[i].y - section.rounding});
   }
   if (corners.empty()) throw std::invalid_argument("the section has no edge facing the floor");
+  if (section.footprint_points > 0) {
+    if (corners.size() != 2) throw std::invalid_argument("a distributed footprint needs a flat base with two corners");
+    return distributed_footprint(section, corners[0], corners[1]);
+  }
   return corners;
 }
 

@@ -20,6 +20,18 @@
 // contact stiffness times the section's base area equals the stiffness of the cylinder's
 // circular base.
 //
+// Distributed footprint (footprint_points = N > 0, b = r): instead of two corners, N contacts
+// across the base diameter in the plane of excitation, the outer two the rounded corners at the
+// rim, the others on the base between them at equal spacing. Each carries the share of the
+// circle's area that its strip of the diameter holds, A_i = integral of the chord 2 sqrt(r^2 -
+// x^2) over the strip (the Winkler foundation of the circular base, cut into strips), adjusted
+// by a factor (a + c x_i^2) so that the sums are exact: sum A_i = pi r^2 = A and
+// sum A_i x_i^2 = pi r^4 / 4 = I_base. The standing cask then has the vertical stiffness k A and
+// the rocking stiffness k I_base of its circular base, as the gyration rule's two corners
+// have, and a tilted cask pivots on its rim (alpha = atan(r / h)), as the radius rule's do: an
+// impact rolls the load from the rim across the base instead of slapping it onto one spring.
+// Its contact lengths are A_i / depth, so k times them times the depth is k A_i.
+//
 // Rounding (Cundall's UDEC): each corner is replaced by a circular arc of radius r_c
 // tangent to both edges; the arc centres are the vertices of the polygon offset inward by
 // r_c: C = P + r_c (n1 + n2) / (1 + n1.n2), n1, n2 the inward unit normals of the edges
@@ -50,7 +62,15 @@ struct Cylinder {
   std::optional<double> inertia;  // kg m^2 about a horizontal diameter through the centre of mass
   HalfWidthRule rule = HalfWidthRule::gyration;
   double eccentricity = 0.0;  // m: horizontal offset of the centre of mass from the axis
+  // 0: two corners at +-b (the rule above); N >= 3: a distributed footprint of N contacts
+  // across the diameter (needs the radius rule: it pivots on the rim).
+  int footprint_points = 0;
 };
+
+// A distributed footprint's default number of contacts: odd, so that one sits at the base
+// centre (where a convex base's camber acts), and enough that the load rolls across the base.
+inline constexpr int kDefaultFootprintPoints = 9;
+inline constexpr int kMinFootprintPoints = 3;
 
 struct Section {
   std::vector<Point> outline;  // outer polygon, counter-clockwise, body frame (origin at the base centre)
@@ -60,6 +80,7 @@ struct Section {
   Point centre_of_mass;        // body frame, m
   double rounding = 0.0;       // corner arc radius, m
   double base_area = 0.0;      // contact area the distributed stiffness acts on, m^2
+  int footprint_points = 0;    // 0: the base's corners; N: a distributed circular footprint (above)
 };
 
 struct ContactCorner {
