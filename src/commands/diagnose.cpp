@@ -36,6 +36,22 @@ void add_uncertainty_option(CLI::App* cmd, std::string& uncertainty, const std::
       ->capture_default_str();
 }
 
+void print_adequacy(const diagnosis::Adequacy& a) {
+  std::cout << "adequate        " << (a.adequate ? "yes" : "no") << ": J " << std::setprecision(4) << a.statistic << " over "
+            << a.residuals << " residuals (RMS " << std::setprecision(3) << a.rms_residual << "), p = " << a.p_value
+            << (a.fits_within_noise ? " (within noise)" : " (beyond noise)") << "\n";
+  if (!a.misfitting_tests.empty()) {
+    std::cout << "  misfitting tests:";
+    for (const std::string& t : a.misfitting_tests) std::cout << " " << t;
+    std::cout << "\n";
+  }
+  for (const diagnosis::ImplausibleValue& v : a.implausible) {
+    std::cout << "  implausible: " << v.parameter << " = " << std::setprecision(4) << v.value << " (nominal " << v.nominal
+              << "): " << v.why << "\n";
+  }
+  for (const std::string& c : a.checks) std::cout << "  check: " << c << "\n";
+}
+
 void print_fit(const diagnosis::ModelFit& m) {
   if (!m.fit.uncertainty_method.empty()) std::cout << "  standard errors from the " << m.fit.uncertainty_method << "\n";
   for (std::size_t i = 0; i < m.parameters.size(); ++i) {
@@ -78,6 +94,7 @@ void add_diagnose(CLI::App& app) {
                 << " evaluations in " << fit.fit.populations << " lockstep populations)\n";
       print_fit(fit);
       std::cout << "held-out error  " << fit.heldout_error << " (RMS of scaled residuals)\n";
+      print_adequacy(fit.adequacy);
       diagnosis::write_calibration(out, set, fit);
       std::cout << "wrote           " << (out / "calibration.json").string() << "\n";
     });
@@ -107,13 +124,19 @@ void add_diagnose(CLI::App& app) {
       const diagnosis::Diagnosis d =
           diagnosis::diagnose(set, options_for(options->threads, options->quiet, options->uncertainty));
       std::cout << "cause           " << d.cause << "\n";
+      for (const diagnosis::FootprintScore& f : d.footprints) {
+        std::cout << "footprint       " << std::left << std::setw(12) << f.footprint << " held-out error "
+                  << std::setprecision(3) << f.heldout_error << ", gain " << f.heldout_gain
+                  << (f.stated ? " (stated)" : "") << (f.chosen ? " chosen" : "") << "\n";
+      }
+      print_adequacy(d.baseline.adequacy);
       if (!d.second_cause.empty()) std::cout << "second effect   " << d.second_cause << "\n";
       std::cout << std::left << std::setw(34) << "mechanism" << std::setw(15) << "held-out gain" << std::setw(12)
                 << "BIC delta" << "significant\n";
       for (const diagnosis::CandidateScore& c : d.ranking) {
         std::cout << std::left << std::setw(34) << diagnosis::mechanism_name(c.mechanism) << std::setw(15)
                   << std::setprecision(3) << c.heldout_gain << std::setw(12) << c.bic_delta
-                  << (c.significant ? "yes" : "no") << "\n";
+                  << diagnosis::significance_text(c) << "\n";
       }
       diagnosis::write_diagnosis(out, set, d, InstructionSet::automatic, !options->no_plot);
       std::cout << "wall time       " << std::setprecision(4) << d.wall_seconds << " s\n";

@@ -9,6 +9,9 @@
 #include <optional>
 #include <utility>
 
+#include "diagnosis/footprint.h"
+#include "diagnosis/residual_structure.h"
+
 namespace caskdem::diagnosis {
 
 namespace {
@@ -59,6 +62,7 @@ Yardstick yardstick_of(const MeasuredSet& set, const DiagnosisOptions& options) 
 struct Judged {
   std::vector<double> loss;                    // per test
   std::vector<std::vector<double>> residuals;  // per test, per measure
+  std::vector<std::vector<double>> heldout_tolerance;  // per test, per measure (judge_at; held-out tests only)
 };
 
 // J for every point over the given tests; each (test, input realisation) runs as one block of
@@ -144,6 +148,8 @@ Judged judge_at(const MeasuredSet& set, const Yardstick& yardstick, const ModelV
   }
   Judged judged;
   (void)objective_over(set, yardstick, variant, as_fitted, {point}, options, &judged);
+  judged.heldout_tolerance.assign(set.tests.size(), {});
+  for (int t : set.heldout) judged.heldout_tolerance[t] = yardstick.references[t].tolerance;
   if (!standard_error.empty()) {
     Yardstick predictive = yardstick;
     add_fit_spread(predictive.references, set.tests, set.heldout, variant, point, standard_error, kFitSpreadDraws,
@@ -153,6 +159,7 @@ Judged judge_at(const MeasuredSet& set, const Yardstick& yardstick, const ModelV
     for (int t : set.heldout) {
       judged.loss[t] = heldout.loss[t];
       judged.residuals[t] = std::move(heldout.residuals[t]);
+      judged.heldout_tolerance[t] = predictive.references[t].tolerance;
     }
   }
   return judged;
@@ -174,6 +181,12 @@ FitOptions fit_options_of(const MeasuredSet& set) {
   o.exploration = set.settings.exploration;
   o.seed = set.settings.seed;
   return o;
+}
+
+Adequacy adequacy_of(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant, const ModelFit& m) {
+  std::vector<int> compared;
+  for (const TestReference& r : yardstick.references) compared.push_back(static_cast<int>(compared_count(r)));
+  return judge_adequacy(set, m.parameters, m.fit, variant.nominal_baseline(), m.loss, m.residuals, compared);
 }
 
 // Fits a model; its searches start from `starts` (the model it extends, mechanism off) and from
@@ -217,9 +230,11 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
   Judged judged = judge_at(set, yardstick, variant, m.fit.best, m.heldout_standard_error, options);
   m.loss = std::move(judged.loss);
   m.residuals = std::move(judged.residuals);
+  m.heldout_tolerance = std::move(judged.heldout_tolerance);
   m.bic = bic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
   m.aic = aic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
   m.heldout_error = error_of(m.loss, yardstick, set.heldout);
+  m.adequacy = adequacy_of(set, yardstick, variant, m);
   return m;
 }
 
@@ -244,27 +259,68 @@ void add_jackknife(const MeasuredSet& set, const Yardstick& yardstick, ModelFit&
                    fit_options_of(set));
 }
 
-CandidateScore score(const MeasuredSet& set, Mechanism mechanism, ModelFit model, const ModelFit& against,
-                     const DiagnosisOptions& options) {
+// The mechanism's switch at its off value: within the standard error the fit gives it, or
+// exactly where it has none (a value on its search bound, a curvature not positive definite).
+bool at_off_value(const MeasuredSet& set, Mechanism mechanism, const ModelFit& model) {
+  const ModelVariant alone(set.specimen, {mechanism}, set.vertical_measured);
+  for (const Parameter& p : alone.parameters()) {
+    if (!p.mechanism || !p.switches_off) continue;
+    for (std::size_t i = 0; i < model.parameters.size(); ++i) {
+      if (model.parameters[i].name != p.name) continue;
+      const double error = standard_error_of(model.fit, model.parameters, i).value_or(0.0);
+      const double round_off = 1e-9 * (p.high - p.low);
+      if (std::abs(model.fit.best[i] - p.reference) <= error + round_off) return true;
+    }
+  }
+  return false;
+}
+
+// The held-out tests of two models judged at common tolerances: per test and measure the
+// larger of the two models' own (each widened by its own fit's spread). At equal predictions
+// both then score alike, whatever their standard errors.
+std::pair<Judged, Judged> judged_in_common(const MeasuredSet& set, const Yardstick& yardstick, const ModelFit& a,
+                                           const ModelFit& b, const DiagnosisOptions& options) {
+  Yardstick common = yardstick;
+  for (int t : set.heldout) {
+    std::vector<double>& tolerance = common.references[t].tolerance;
+    for (std::size_t m = 0; m < tolerance.size(); ++m) {
+      tolerance[m] = std::max(a.heldout_tolerance[t][m], b.heldout_tolerance[t][m]);
+    }
+  }
+  const auto judged = [&](const ModelFit& fit) {
+    const ModelVariant variant(set.specimen, fit.mechanisms, set.vertical_measured);
+    Judged j;
+    (void)objective_over(set, common, variant, set.heldout, {fit.fit.best}, options, &j);
+    return j;
+  };
+  return {judged(a), judged(b)};
+}
+
+CandidateScore score(const MeasuredSet& set, const Yardstick& yardstick, Mechanism mechanism, ModelFit model,
+                     const ModelFit& against, const DiagnosisOptions& options) {
   CandidateScore s;
   s.mechanism = mechanism;
-  s.heldout_gain = against.heldout_error > 0.0 ? 1.0 - model.heldout_error / against.heldout_error : 0.0;
+  const auto [mine, theirs] = judged_in_common(set, yardstick, model, against, options);
+  s.heldout_error = error_of(mine.loss, yardstick, set.heldout);
+  s.reference_heldout_error = error_of(theirs.loss, yardstick, set.heldout);
+  s.heldout_gain = s.reference_heldout_error > 0.0 ? 1.0 - s.heldout_error / s.reference_heldout_error : 0.0;
   s.bic_delta = model.bic - against.bic;
   s.aic_delta = model.aic - against.aic;
   for (int t : set.heldout) {
-    s.heldout_tests_improved += model.loss[t] < against.loss[t];
+    s.heldout_tests_improved += mine.loss[t] < theirs.loss[t];
   }
   for (std::size_t m = 0; m < measure_names().size(); ++m) {
-    double mine = 0.0, theirs = 0.0;
+    double sum_mine = 0.0, sum_theirs = 0.0;
     for (int t : set.heldout) {
-      mine += model.residuals[t][m] * model.residuals[t][m];
-      theirs += against.residuals[t][m] * against.residuals[t][m];
+      sum_mine += mine.residuals[t][m] * mine.residuals[t][m];
+      sum_theirs += theirs.residuals[t][m] * theirs.residuals[t][m];
     }
-    s.measure_gain.push_back(theirs > 0.0 ? 1.0 - std::sqrt(mine / theirs) : 0.0);
+    s.measure_gain.push_back(sum_theirs > 0.0 ? 1.0 - std::sqrt(sum_mine / sum_theirs) : 0.0);
   }
+  s.at_off_value = at_off_value(set, mechanism, model);
   const double improved = double(s.heldout_tests_improved) / double(set.heldout.size());
-  s.significant = s.heldout_gain >= options.minimum_gain && s.bic_delta <= options.maximum_bic_delta &&
-                  improved >= options.minimum_improved_fraction;
+  s.significant = !s.at_off_value && s.heldout_gain >= options.minimum_gain &&
+                  s.bic_delta <= options.maximum_bic_delta && improved >= options.minimum_improved_fraction;
   s.model = std::move(model);
   return s;
 }
@@ -300,112 +356,6 @@ void say(const DiagnosisOptions& options, const std::string& line) {
   if (options.log) options.log(line);
 }
 
-// ---- residual structure -------------------------------------------------------------------
-
-double correlation(const std::vector<double>& x, const std::vector<double>& y) {
-  const std::size_t n = x.size();
-  if (n < 3) return 0.0;
-  const double mx = std::accumulate(x.begin(), x.end(), 0.0) / n, my = std::accumulate(y.begin(), y.end(), 0.0) / n;
-  double sxy = 0.0, sxx = 0.0, syy = 0.0;
-  for (std::size_t i = 0; i < n; ++i) {
-    sxy += (x[i] - mx) * (y[i] - my);
-    sxx += (x[i] - mx) * (x[i] - mx);
-    syy += (y[i] - my) * (y[i] - my);
-  }
-  return sxx > 0.0 && syy > 0.0 ? sxy / std::sqrt(sxx * syy) : 0.0;
-}
-
-// Mean over t-statistic of a sample: how consistently it is off zero.
-double t_statistic(const std::vector<double>& v) {
-  const std::size_t n = v.size();
-  if (n < 2) return 0.0;
-  const double mean = std::accumulate(v.begin(), v.end(), 0.0) / n;
-  double ss = 0.0;
-  for (double x : v) ss += (x - mean) * (x - mean);
-  const double sd = std::sqrt(ss / (n - 1));
-  return sd > 0.0 ? mean / (sd / std::sqrt(double(n))) : (mean != 0.0 ? 1e3 : 0.0);
-}
-
-double peak_rate(const std::vector<double>& x, const std::vector<std::uint8_t>& valid, double dt) {
-  double peak = 0.0;
-  for (std::size_t k = 2; k + 2 < x.size(); ++k) {
-    if (!valid[k - 2] || !valid[k + 2]) continue;
-    // A five-point derivative smooths sensor noise.
-    const double rate = (-x[k + 2] + 8.0 * x[k + 1] - 8.0 * x[k - 1] + x[k - 2]) / (12.0 * dt);
-    peak = std::max(peak, std::abs(rate));
-  }
-  return peak;
-}
-
-// The lag (s) that best aligns the simulated rotation with the measured one (positive: the
-// measurement is late), by cross-correlation over +-0.2 s.
-double lag_of(const MeasuredTest& test, const SimulatedHistory& simulated) {
-  const int steps = static_cast<int>(0.2 / test.time_step);
-  double best = -1e300;
-  int best_lag = 0;
-  for (int lag = -steps; lag <= steps; ++lag) {
-    double sum = 0.0;
-    for (std::size_t k = 0; k < test.time.size(); ++k) {
-      const auto j = static_cast<std::ptrdiff_t>(k) - lag;
-      if (j < 0 || j >= static_cast<std::ptrdiff_t>(simulated.rotation.size()) || !test.rotation_valid[k]) continue;
-      sum += test.rotation[k] * simulated.rotation[j];
-    }
-    if (sum > best) {
-      best = sum;
-      best_lag = lag;
-    }
-  }
-  return best_lag * test.time_step;
-}
-
-std::vector<StructureRow> residual_structure(const MeasuredSet& set, const std::vector<TestReference>& references,
-                                             const ModelFit& baseline, const Model& model,
-                                             const std::vector<SimulatedHistory>& histories) {
-  const std::size_t asymmetry_index = measure_index("rotation_asymmetry"), rms_index = measure_index("rms_rotation"),
-                    slide_index = measure_index("max_sliding"), rate_index = measure_index("rocking_rate"),
-                    duration_index = measure_index("rocking_duration");
-  std::vector<double> amplitude, sliding_speed, impact_speed, vertical, asymmetry, lag;
-  std::vector<double> r_rms, r_slide, r_rate, r_duration;
-  for (std::size_t t = 0; t < set.tests.size(); ++t) {
-    const MeasuredTest& test = set.tests[t];
-    amplitude.push_back(references[t].measured.peak_rotation / model.stability_angle);
-    sliding_speed.push_back(peak_rate(test.slide, test.slide_valid, test.time_step));
-    impact_speed.push_back(peak_rate(test.rotation, test.rotation_valid, test.time_step));
-    double v = 0.0;
-    if (test.has_vertical) {
-      for (double a : test.vertical_table_acceleration) v += a * a;
-      v = std::sqrt(v / test.vertical_table_acceleration.size()) / model.gravity;
-    }
-    vertical.push_back(v);
-    const std::vector<double>& r = baseline.residuals[t];
-    asymmetry.push_back(r[asymmetry_index]);
-    r_rms.push_back(r[rms_index]);
-    r_slide.push_back(r[slide_index]);
-    r_rate.push_back(r[rate_index]);
-    r_duration.push_back(r[duration_index]);
-    lag.push_back(lag_of(test, histories[t]));
-  }
-  std::vector<StructureRow> rows = {
-      {"amplitude (peak theta / alpha)", "rms_rotation", correlation(amplitude, r_rms), "correlation",
-       "amplitude_dependent_restitution, out_of_plane_loss"},
-      {"amplitude (peak theta / alpha)", "rocking_duration", correlation(amplitude, r_duration), "correlation",
-       "amplitude_dependent_restitution, out_of_plane_loss, floor_compliance"},
-      {"amplitude (peak theta / alpha)", "rocking_rate", correlation(amplitude, r_rate), "correlation",
-       "base_imperfection, floor_compliance"},
-      {"peak sliding speed", "max_sliding", correlation(sliding_speed, r_slide), "correlation",
-       "velocity_dependent_friction"},
-      {"peak angular (impact) speed", "rms_rotation", correlation(impact_speed, r_rms), "correlation",
-       "amplitude_dependent_restitution"},
-      {"rotation sign", "rotation_asymmetry", t_statistic(asymmetry), "t (mean / standard error)",
-       "eccentric_mass, base_imperfection"},
-      {"vertical table acceleration (rms / g)", "rms_rotation", correlation(vertical, r_rms), "correlation",
-       "vertical_excitation"},
-      {"time (lag of measured behind simulated rotation, s)", "rotation_history",
-       std::accumulate(lag.begin(), lag.end(), 0.0) / lag.size(), "mean lag, s", "sensor_delay"},
-  };
-  return rows;
-}
-
 }  // namespace
 
 std::vector<SimulatedHistory> fitted_histories(const MeasuredSet& set, const ModelFit& fit, InstructionSet isa) {
@@ -424,6 +374,78 @@ ModelFit fit_baseline(const MeasuredSet& set, const Yardstick& yardstick, const 
   say(options, "fitting the baseline (friction, damping ratio, stiffness scale) on " +
                    std::to_string(set.training.size()) + " training tests");
   return fit_variant(set, yardstick, baseline, {baseline.reference()}, options);
+}
+
+// The baseline calibrated on each footprint rule of a cylindrical specimen (footprint.h). The
+// rules' held-out tests are judged at common tolerances (the stated rule's references, each
+// held-out tolerance the largest of the rules' own), and another rule replaces the stated one
+// only when it predicts them by at least minimum_gain better: the analyst's rule stands unless
+// the data speak against it.
+struct FootprintChoice {
+  std::optional<MeasuredSet> set;  // the data on the chosen rule, when it is not the stated one
+  Yardstick yardstick;             // of the chosen rule
+  ModelFit baseline;               // calibrated on it
+  std::vector<FootprintScore> scores;
+};
+
+FootprintChoice choose_footprint(const MeasuredSet& given, const DiagnosisOptions& options) {
+  const Footprint stated = *footprint_of(given.specimen);
+  std::vector<MeasuredSet> sets;
+  std::vector<Yardstick> yardsticks;
+  std::vector<ModelFit> fits;
+  std::size_t stated_index = 0;
+  std::vector<Footprint> tried;
+  for (Footprint f : all_footprints()) {
+    MeasuredSet s = given;
+    try {
+      s.specimen = with_footprint(given.specimen, f);
+      (void)ModelVariant(s.specimen, {}, s.vertical_measured);
+    } catch (const std::invalid_argument& e) {  // a rule this cask cannot stand on (its centre of mass beyond r/2)
+      say(options, "footprint " + footprint_name(f) + " not tried: " + e.what());
+      continue;
+    }
+    if (f == stated) stated_index = sets.size();
+    tried.push_back(f);
+    say(options, "footprint " + footprint_name(f) + ": judging how predictable each test is");
+    yardsticks.push_back(yardstick_of(s, options));
+    say(options, "footprint " + footprint_name(f) + ": fitting the baseline");
+    fits.push_back(fit_baseline(s, yardsticks.back(), options));
+    sets.push_back(std::move(s));
+  }
+  Yardstick common = yardsticks[stated_index];
+  for (int t : given.heldout) {
+    for (const ModelFit& fit : fits) {
+      for (std::size_t m = 0; m < fit.heldout_tolerance[t].size(); ++m) {
+        common.references[t].tolerance[m] = std::max(common.references[t].tolerance[m], fit.heldout_tolerance[t][m]);
+      }
+    }
+  }
+  FootprintChoice choice;
+  for (std::size_t i = 0; i < fits.size(); ++i) {
+    const ModelVariant variant(sets[i].specimen, {}, sets[i].vertical_measured);
+    Judged judged;
+    (void)objective_over(sets[i], common, variant, given.heldout, {fits[i].fit.best}, options, &judged);
+    FootprintScore score;
+    score.footprint = footprint_name(tried[i]);
+    score.stated = i == stated_index;
+    score.heldout_error = error_of(judged.loss, common, given.heldout);
+    score.baseline = fits[i];
+    choice.scores.push_back(std::move(score));
+  }
+  std::size_t chosen = stated_index;
+  const double stated_error = choice.scores[stated_index].heldout_error;
+  for (std::size_t i = 0; i < choice.scores.size(); ++i) {
+    FootprintScore& score = choice.scores[i];
+    score.heldout_gain = stated_error > 0.0 ? 1.0 - score.heldout_error / stated_error : 0.0;
+    if (score.heldout_gain >= options.minimum_gain && score.heldout_error < choice.scores[chosen].heldout_error) {
+      chosen = i;
+    }
+  }
+  choice.scores[chosen].chosen = true;
+  if (chosen != stated_index) choice.set = std::move(sets[chosen]);
+  choice.yardstick = std::move(yardsticks[chosen]);
+  choice.baseline = std::move(fits[chosen]);
+  return choice;
 }
 
 }  // namespace
@@ -466,6 +488,35 @@ PointEvaluation evaluate_point(const MeasuredSet& set, const std::vector<Mechani
   e.bic = bic_of(e.training_objective, e.training_residual_count, e.parameters.size());
   e.heldout_error = error_of(e.loss, yardstick, set.heldout);
   return e;
+}
+
+ModelFit judged_fit(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms, const std::vector<double>& point,
+                    const std::vector<double>& heldout_standard_error, const DiagnosisOptions& options) {
+  const ModelVariant variant(set.specimen, mechanisms, set.vertical_measured);
+  const Yardstick yardstick = yardstick_of(set, options);
+  ModelFit m;
+  m.mechanisms = variant.mechanisms();
+  m.name = variant.name();
+  m.parameters = variant.parameters();
+  m.fit.best = point;
+  m.fit.standard_error = heldout_standard_error;
+  m.heldout_standard_error = heldout_standard_error;
+  m.training_residual_count = residual_count(yardstick, set.training);
+  Judged judged = judge_at(set, yardstick, variant, point, heldout_standard_error, options);
+  for (int t : set.training) m.fit.objective += judged.loss[t];
+  m.loss = std::move(judged.loss);
+  m.residuals = std::move(judged.residuals);
+  m.heldout_tolerance = std::move(judged.heldout_tolerance);
+  m.bic = bic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
+  m.aic = aic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
+  m.heldout_error = error_of(m.loss, yardstick, set.heldout);
+  m.adequacy = adequacy_of(set, yardstick, variant, m);
+  return m;
+}
+
+CandidateScore score_candidate(const MeasuredSet& set, Mechanism mechanism, const ModelFit& candidate,
+                               const ModelFit& reference, const DiagnosisOptions& options) {
+  return score(set, yardstick_of(set, options), mechanism, candidate, reference, options);
 }
 
 std::vector<double> training_objective_without(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms,
@@ -523,7 +574,7 @@ SecondEffectSearch search_second_effect(const MeasuredSet& set, const Yardstick&
   for (auto& [added, pair] : pairs) {
     const ModelVariant variant(set.specimen, {first, added}, set.vertical_measured);
     if (pair.fit.objective > against.fit.objective) pair = switched_off(against, variant);
-    search.ranking.push_back(score(set, added, std::move(pair), against, options));
+    search.ranking.push_back(score(set, yardstick, added, std::move(pair), against, options));
   }
   std::stable_sort(search.ranking.begin(), search.ranking.end(),
                    [](const CandidateScore& a, const CandidateScore& b) { return a.heldout_gain > b.heldout_gain; });
@@ -532,13 +583,22 @@ SecondEffectSearch search_second_effect(const MeasuredSet& set, const Yardstick&
 
 }  // namespace
 
-Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {
+Diagnosis diagnose(const MeasuredSet& given, const DiagnosisOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   Diagnosis d;
   say(options, "judging how predictable each test is (" + std::to_string(kPredictabilityRealisations) +
                    " simulations per test with fresh input noise)");
-  const Yardstick yardstick = yardstick_of(set, options);
-  d.baseline = fit_baseline(set, yardstick, options);
+  // The footprint first: the mechanisms are fitted on the rule the held-out tests prefer.
+  std::optional<FootprintChoice> footprint;
+  if (options.choose_footprint && footprint_of(given.specimen)) footprint = choose_footprint(given, options);
+  const MeasuredSet& set = footprint && footprint->set ? *footprint->set : given;
+  const Yardstick yardstick = footprint ? std::move(footprint->yardstick) : yardstick_of(set, options);
+  d.baseline = footprint ? std::move(footprint->baseline) : fit_baseline(set, yardstick, options);
+  if (footprint) {
+    d.footprints = std::move(footprint->scores);
+    d.footprint_changed = footprint->set.has_value();
+  }
+  if (const std::optional<Footprint> f = footprint_of(set.specimen)) d.footprint = footprint_name(*f);
   const ModelVariant baseline_variant(set.specimen, {}, set.vertical_measured);
   d.structure = residual_structure(set, yardstick.references, d.baseline, baseline_variant.model(),
                                    fitted_histories(set, d.baseline, options.isa));
@@ -566,7 +626,7 @@ Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {
   for (CandidateScore& c : d.ranking) {
     const ModelVariant variant(set.specimen, {c.mechanism}, set.vertical_measured);
     if (c.model.fit.objective > d.baseline.fit.objective) c.model = switched_off(d.baseline, variant);
-    c = score(set, c.mechanism, std::move(c.model), d.baseline, options);
+    c = score(set, yardstick, c.mechanism, std::move(c.model), d.baseline, options);
   }
   std::stable_sort(d.ranking.begin(), d.ranking.end(),
                    [](const CandidateScore& a, const CandidateScore& b) { return a.heldout_gain > b.heldout_gain; });
@@ -586,6 +646,8 @@ Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options) {
     if (cause != d.ranking.end()) add_jackknife(set, yardstick, cause->model, options);
   }
   if (cause != d.ranking.end()) d.cause = mechanism_name(cause->mechanism);
+  else if (d.footprint_changed) d.cause = "footprint";
+  else if (!d.baseline.adequacy.adequate) d.cause = "unexplained";
   d.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return d;
 }

@@ -3,7 +3,11 @@
 // most likely physical cause, this is how much the extended model gains on tests it was not
 // fitted to".
 //
-//  1. Calibrate the baseline (friction, damping ratio, stiffness scale) on the training tests.
+//  1. Calibrate the baseline (friction, damping ratio, stiffness scale) on the training tests,
+//     for a cylinder on each footprint rule (two corners at the gyration half-width or the
+//     radius, or a distributed base; footprint.h), and keep the rule the held-out tests prefer
+//     (by at least minimum_gain; the stated one otherwise). Judge the baseline's adequacy
+//     (adequacy.h): does it fit every test within noise, with plausible values?
 //  2. Measure its discrepancy on every test (src/diagnosis/measures.h) and look for structure
 //     in it: residuals against amplitude, sliding speed, impact speed, rotation sign, vertical
 //     acceleration and time (a lag between simulated and measured rotation).
@@ -18,10 +22,18 @@
 //     prediction: its tolerances also allow the spread of the model's response over draws of
 //     its fitted parameters (measures.h, add_fit_spread), so a fit whose training tests leave
 //     a knife-edge held-out test undecided is not charged for the side its point falls on.
+//     A mechanism and the model it extends are compared on the held-out tests at common
+//     tolerances, per test and measure the larger of the two models' own: at their own, a fit
+//     with more or larger standard errors would get wider tolerances and a smaller error at
+//     equal predictions, rewarding vagueness. A mechanism whose switch (a gain, a ratio) is at
+//     its off value within its standard error is the model it extends: never significant.
 //  5. The cause is the mechanism with the largest held-out gain among the significant ones:
 //     held-out gain >= minimum_gain, BIC lower by at least -maximum_bic_delta, and the held-out
-//     error lower on at least half of the held-out tests. None significant: "none", the model
-//     disagrees with the data no more than noise explains. Then each remaining mechanism is
+//     error lower on at least half of the held-out tests. None significant: "none" when the
+//     calibrated baseline is adequate (it fits every test within noise with plausible values;
+//     adequacy.h), else "unexplained": it misfits, and no mechanism of the library explains
+//     it; the misfitting tests and measures, the implausible values and what to check are
+//     named. Then each remaining mechanism is
 //     fitted on top of the cause, the cause's model is refitted from those pairs' values of its
 //     parameters (a pair must not gain by a better fit of the cause alone), and a pair
 //     significant against the better fit of the cause is reported as a second effect. The
@@ -32,6 +44,7 @@
 #include <string>
 #include <vector>
 
+#include "diagnosis/adequacy.h"
 #include "diagnosis/fitting.h"
 #include "diagnosis/measured_set.h"
 #include "diagnosis/measures.h"
@@ -46,6 +59,9 @@ struct DiagnosisOptions {
   double maximum_bic_delta = -10.0;
   double minimum_improved_fraction = 0.5;
   bool look_for_second_effect = true;
+  // A cylindrical specimen's baseline is calibrated on every footprint rule (footprint.h) and
+  // the one the held-out tests prefer by at least minimum_gain replaces the stated one.
+  bool choose_footprint = true;
   // Standard errors of the baseline, and of the cause if there is one, raised to the jackknife's
   // where larger (refits without each training test; fitting.h). Costs a fit per training test.
   // Off here (the tests need no errors); the commands turn it on unless asked not to.
@@ -67,16 +83,26 @@ struct ModelFit {
   // The standard errors (the curvature's) whose prediction spread widened the held-out tests'
   // tolerances (measures.h, add_fit_spread); empty: judged at the point alone.
   std::vector<double> heldout_standard_error;
+  // Per test, per measure: the tolerances each held-out test was judged with (empty for the
+  // training tests).
+  std::vector<std::vector<double>> heldout_tolerance;
+  Adequacy adequacy;  // does it fit within noise, with plausible values (adequacy.h)
 };
 
 struct CandidateScore {
   Mechanism mechanism;
   ModelFit model;
-  double heldout_gain = 0.0;     // 1 - heldout_error(candidate) / heldout_error(reference model)
+  // Both judged on the held-out tests at common tolerances (the larger of the two models' own).
+  double heldout_error = 0.0;            // the candidate's
+  double reference_heldout_error = 0.0;  // the model it extends
+  double heldout_gain = 0.0;     // 1 - heldout_error / reference_heldout_error
   double bic_delta = 0.0;        // against the reference model (negative: better)
   double aic_delta = 0.0;
   int heldout_tests_improved = 0;
   std::vector<double> measure_gain;  // per measure, over the held-out tests
+  // The mechanism's switch is at its off value (within its standard error): the fit is the
+  // model it extends, whatever its gain says.
+  bool at_off_value = false;
   bool significant = false;
 };
 
@@ -88,8 +114,25 @@ struct StructureRow {
   std::string points_to;  // mechanisms this pattern suggests
 };
 
+// The baseline calibrated on one footprint rule, judged on the held-out tests at tolerances
+// common to every rule tried.
+struct FootprintScore {
+  std::string footprint;       // footprint_name
+  bool stated = false;         // the specimen's own rule
+  bool chosen = false;
+  double heldout_error = 0.0;
+  double heldout_gain = 0.0;   // against the stated rule
+  ModelFit baseline;
+};
+
 struct Diagnosis {
+  // A mechanism's name; "footprint" when no mechanism is significant but another footprint rule
+  // fits better than the stated one; "unexplained" when the baseline misfits and nothing
+  // explains it; "none" when it fits within noise.
   std::string cause = "none";
+  std::string footprint;                    // the rule the mechanisms were fitted on
+  bool footprint_changed = false;           // it is not the specimen's stated rule
+  std::vector<FootprintScore> footprints;   // every rule tried (empty: not a cylinder, or not asked)
   std::string second_cause;  // empty when no second effect
   ModelFit baseline;
   std::vector<CandidateScore> ranking;         // by held-out gain
@@ -133,6 +176,16 @@ struct PointEvaluation {
 PointEvaluation evaluate_point(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms,
                                const std::vector<double>& point, const std::vector<double>& heldout_standard_error,
                                const DiagnosisOptions& options);
+
+// A model judged at one point as a fit's result is: every test's residuals and loss, the held-out
+// tests judged as predictions with `heldout_standard_error` (none: at the point alone).
+ModelFit judged_fit(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms, const std::vector<double>& point,
+                    const std::vector<double>& heldout_standard_error, const DiagnosisOptions& options);
+
+// How a mechanism's fit (`candidate`, whose model adds `mechanism` to `reference`'s) scores
+// against the model it extends, as the diagnosis ranks it.
+CandidateScore score_candidate(const MeasuredSet& set, Mechanism mechanism, const ModelFit& candidate,
+                               const ModelFit& reference, const DiagnosisOptions& options);
 
 // The simulated histories of a fitted model on every test (for reports and plots).
 std::vector<SimulatedHistory> fitted_histories(const MeasuredSet& set, const ModelFit& fit, InstructionSet isa);

@@ -74,7 +74,12 @@ ModelVariant::ModelVariant(const Case& specimen, std::vector<Mechanism> mechanis
   if (has(Mechanism::base_imperfection)) spec.base_centre_contact = true;
   model_ = build_model(spec, specimen_.parameters);
 
-  const double half_span = 0.5 * std::abs(model_.corner_x[1] - model_.corner_x[0]);
+  double left = model_.corner_x[0], right = model_.corner_x[0];
+  for (int k = 1; k < model_.corner_count; ++k) {
+    left = std::min(left, model_.corner_x[k]);
+    right = std::max(right, model_.corner_x[k]);
+  }
+  const double half_span = 0.5 * (right - left);
   const double penetration = specimen_.parameters.mass * model_.gravity / total_standing_normal_stiffness(model_);
   parameters_ = {
       {"friction", "", 0.05, 1.5, false, specimen_.parameters.friction_static},
@@ -86,7 +91,7 @@ ModelVariant::ModelVariant(const Case& specimen, std::vector<Mechanism> mechanis
     switch (m) {
       case Mechanism::velocity_dependent_friction:
         parameters_.push_back({"kinetic_ratio", "", 0.3, 1.5, false, 1.0});
-        parameters_.push_back({"decay_speed", "m/s", 0.005, 1.0, true, 0.05});
+        parameters_.push_back({"decay_speed", "m/s", 0.005, 1.0, true, 0.05, true, false});
         break;
       case Mechanism::amplitude_dependent_restitution:
         parameters_.push_back({"impact_damping", "s/m", 0.0, 30.0, false, 0.0});
@@ -102,7 +107,8 @@ ModelVariant::ModelVariant(const Case& specimen, std::vector<Mechanism> mechanis
         break;
       case Mechanism::floor_compliance:
         parameters_.push_back({"floor_soft_ratio", "", 0.01, 1.0, true, 1.0});
-        parameters_.push_back({"floor_soft_depth", "m", 0.1 * penetration, 100.0 * penetration, true, penetration});
+        parameters_.push_back(
+            {"floor_soft_depth", "m", 0.1 * penetration, 100.0 * penetration, true, penetration, true, false});
         break;
       case Mechanism::out_of_plane_loss:
         parameters_.push_back({"wobble_damping", "", 0.0, 0.5, false, 0.0});

@@ -53,6 +53,9 @@ struct Parameter {
   bool logarithmic = false;      // searched on a log scale (then low > 0)
   double reference = 0.0;        // the value that switches the mechanism off (or the baseline's start)
   bool mechanism = false;        // a mechanism's own parameter (not the baseline's)
+  // A mechanism's parameter whose reference alone switches the mechanism off, whatever the
+  // others (a kinetic ratio of 1, a gain of 0); false for one that only shapes it (a decay speed).
+  bool switches_off = true;
 };
 
 // Where the vertical table acceleration of a test comes from.

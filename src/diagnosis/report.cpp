@@ -33,6 +33,27 @@ nlohmann::json parameters_json(const ModelFit& m) {
   return j;
 }
 
+nlohmann::json adequacy_json(const Adequacy& a) {
+  nlohmann::json j;
+  j["adequate"] = a.adequate;
+  j["fits_within_noise"] = a.fits_within_noise;
+  j["goodness_of_fit"] = {{"statistic", a.statistic},
+                          {"residuals", a.residuals},
+                          {"degrees_of_freedom", a.degrees_of_freedom},
+                          {"p_value", a.p_value},
+                          {"rms_residual", a.rms_residual},
+                          {"level", kAdequacyLevel}};
+  j["misfitting_tests"] = a.misfitting_tests;
+  j["misfits"] = nlohmann::json::array();
+  for (const Misfit& m : a.misfits) j["misfits"].push_back({{"test", m.test}, {"measure", m.measure}, {"residual", m.residual}});
+  j["implausible"] = nlohmann::json::array();
+  for (const ImplausibleValue& v : a.implausible) {
+    j["implausible"].push_back({{"parameter", v.parameter}, {"value", v.value}, {"nominal", v.nominal}, {"why", v.why}});
+  }
+  j["checks"] = a.checks;
+  return j;
+}
+
 nlohmann::json fit_json(const ModelFit& m) {
   nlohmann::json j;
   j["model"] = m.name;
@@ -41,6 +62,7 @@ nlohmann::json fit_json(const ModelFit& m) {
   j["bic"] = m.bic;
   j["aic"] = m.aic;
   j["heldout_error"] = m.heldout_error;
+  j["adequacy"] = adequacy_json(m.adequacy);
   // The errors whose prediction spread widened the held-out tests' tolerances (evaluate-measured
   // --from takes them, to judge this point as the diagnosis did).
   if (!m.heldout_standard_error.empty()) {
@@ -59,6 +81,11 @@ nlohmann::json candidate_json(const CandidateScore& c) {
   nlohmann::json j;
   j["mechanism"] = mechanism_name(c.mechanism);
   j["heldout_gain"] = c.heldout_gain;
+  // The held-out errors the gain compares: both models judged at common tolerances, per test
+  // and measure the larger of the two models' own (diagnose.h, step 4).
+  j["heldout_error"] = c.heldout_error;
+  j["reference_heldout_error"] = c.reference_heldout_error;
+  j["at_off_value"] = c.at_off_value;
   j["information_criterion_delta"] = c.bic_delta;
   j["information_criterion"] = "BIC";
   j["aic_delta"] = c.aic_delta;
@@ -84,6 +111,44 @@ std::string uncertainty_text(const ModelFit& m, std::size_t i) {
   const std::optional<double> error = standard_error_of(m.fit, m.parameters, i);
   return error ? "+- " + number(*error, 2) : "-";
 }
+
+std::string adequacy_markdown(const Adequacy& a) {
+  std::ostringstream md;
+  md << "\n## Is the baseline adequate?\n\n"
+     << (a.adequate ? "Yes" : "No") << ". Goodness of fit over every test: J = " << number(a.statistic, 4) << " over "
+     << a.residuals << " scaled residuals (RMS " << number(a.rms_residual, 3) << " tolerances), p = "
+     << number(a.p_value, 3) << " against chi-square with " << a.degrees_of_freedom << " degrees of freedom"
+     << (a.fits_within_noise ? " (within noise" : " (beyond noise") << " at the " << number(kAdequacyLevel, 2)
+     << " level).\n\n";
+  if (!a.misfitting_tests.empty()) {
+    md << "Tests that misfit beyond noise:";
+    for (const std::string& t : a.misfitting_tests) md << " " << t;
+    md << ".\n\n";
+  }
+  if (!a.misfits.empty()) {
+    md << "| test | measure | residual (tolerances) |\n|---|---|---|\n";
+    for (const Misfit& m : a.misfits) md << "| " << m.test << " | " << m.measure << " | " << number(m.residual, 3) << " |\n";
+    md << "\n";
+  }
+  for (const ImplausibleValue& v : a.implausible) {
+    md << "- implausible: " << v.parameter << " = " << number(v.value, 4) << " (nominal " << number(v.nominal, 4)
+       << "): " << v.why << "\n";
+  }
+  if (!a.checks.empty()) {
+    md << "\nWhat to check:\n\n";
+    for (const std::string& c : a.checks) md << "- " << c << "\n";
+  }
+  return md.str();
+}
+
+}  // namespace
+
+std::string significance_text(const CandidateScore& c) {
+  if (c.at_off_value) return "no (at its off value)";
+  return c.significant ? "yes" : "no";
+}
+
+namespace {
 
 const CandidateScore* find(const std::vector<CandidateScore>& list, const std::string& name) {
   for (const CandidateScore& c : list) {
@@ -156,6 +221,17 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   for (const MeasuredTest& t : set.tests) {
     for (const std::string& issue : t.issues) j["data_issues"].push_back(issue);
   }
+  j["footprint"] = d.footprint.empty() ? nlohmann::json(nullptr) : nlohmann::json(d.footprint);
+  j["footprint_changed"] = d.footprint_changed;
+  j["footprints"] = nlohmann::json::array();
+  for (const FootprintScore& f : d.footprints) {
+    j["footprints"].push_back({{"footprint", f.footprint},
+                               {"stated", f.stated},
+                               {"chosen", f.chosen},
+                               {"heldout_error", f.heldout_error},
+                               {"heldout_gain", f.heldout_gain},
+                               {"baseline", fit_json(f.baseline)}});
+  }
   j["baseline"] = fit_json(d.baseline);
   j["ranking"] = nlohmann::json::array();
   for (const CandidateScore& c : d.ranking) j["ranking"].push_back(candidate_json(c));
@@ -193,8 +269,17 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   if (!d.second_cause.empty()) md << "; a second effect remains: **" << d.second_cause << "**";
   md << ".\n\n";
   if (d.cause == "none") {
-    md << "No mechanism improves the prediction of the held-out tests significantly: the baseline model "
-          "disagrees with these data no more than their noise explains.\n\n";
+    md << "No mechanism improves the prediction of the held-out tests significantly, and the calibrated baseline "
+          "fits every test within what the noise and the tests' predictability allow, with plausible values: "
+          "nothing to add to the model.\n\n";
+  } else if (d.cause == "footprint") {
+    md << "The calibrated baseline on the stated footprint predicts the held-out tests worse than on the `"
+       << d.footprint << "` footprint, and no mechanism improves on that significantly: the stated footprint is the "
+          "likely cause (below, \"Footprint\").\n\n";
+  } else if (d.cause == "unexplained") {
+    md << "No mechanism improves the prediction of the held-out tests significantly, but the calibrated baseline "
+          "does not fit these data: the model misfits beyond noise, or reaches them only with implausible values, "
+          "and no mechanism of the library explains it (below, \"Is the baseline adequate?\").\n\n";
   } else {
     md << "Fitted with `" << d.cause << "`, the model predicts the held-out tests (not used for fitting) with "
        << number(100.0 * chosen->heldout_gain, 3) << " % less error than the calibrated baseline, and its BIC on the "
@@ -214,7 +299,21 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
     }
   }
   if (!any_issue) md << "No imperfections found in the test files.\n";
-  md << "\n## Calibrated baseline\n\n";
+  if (!d.footprints.empty()) {
+    md << "\n## Footprint\n\nThe baseline calibrated on each footprint rule, the held-out tests judged at common "
+          "tolerances; another rule replaces the stated one when its held-out gain is at least 0.2.\n\n"
+       << "| footprint | held-out error | gain against the stated rule | friction | damping ratio | stiffness scale | "
+          "adequate | |\n|---|---|---|---|---|---|---|---|\n";
+    for (const FootprintScore& f : d.footprints) {
+      md << "| " << f.footprint << (f.stated ? " (stated)" : "") << " | " << number(f.heldout_error, 3) << " | "
+         << number(f.heldout_gain, 3) << " | " << number(f.baseline.fit.best[0], 3) << " | "
+         << number(f.baseline.fit.best[1], 3) << " | " << number(f.baseline.fit.best[2], 3) << " | "
+         << (f.baseline.adequacy.adequate ? "yes" : "no") << " | " << (f.chosen ? "chosen" : "") << " |\n";
+    }
+  }
+  md << "\n## Calibrated baseline";
+  if (!d.footprint.empty()) md << " (footprint: " << d.footprint << ")";
+  md << "\n\n";
   if (!d.baseline.fit.uncertainty_method.empty()) {
     md << "Standard errors from the " << d.baseline.fit.uncertainty_method
        << (d.baseline.fit.uncertainty_method == "curvature"
@@ -227,6 +326,7 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
     md << "| " << d.baseline.parameters[i].name << " | " << number(d.baseline.fit.best[i], 4) << " "
        << d.baseline.parameters[i].units << " | " << uncertainty_text(d.baseline, i) << " |\n";
   }
+  md << adequacy_markdown(d.baseline.adequacy);
   md << "\n## Where the baseline disagrees (residual structure)\n\n"
      << "| residual | against | statistic | suggests |\n|---|---|---|---|\n";
   for (const StructureRow& r : d.structure) {
@@ -238,7 +338,7 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
      << "|---|---|---|---|---|---|\n";
   for (const CandidateScore& c : d.ranking) {
     md << "| " << mechanism_name(c.mechanism) << " | " << number(c.heldout_gain, 3) << " | " << number(c.bic_delta, 3)
-       << " | " << c.heldout_tests_improved << "/" << set.heldout.size() << " | " << (c.significant ? "yes" : "no") << " | ";
+       << " | " << c.heldout_tests_improved << "/" << set.heldout.size() << " | " << significance_text(c) << " | ";
     for (std::size_t i = 3; i < c.model.parameters.size(); ++i) {  // the mechanism's own parameters
       md << c.model.parameters[i].name << " = " << number(c.model.fit.best[i], 3) << " "
          << c.model.parameters[i].units << " (" << uncertainty_text(c.model, i) << "); ";
@@ -265,7 +365,7 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
        << "|---|---|---|---|\n";
     for (const CandidateScore& c : d.second_ranking) {
       md << "| " << mechanism_name(c.mechanism) << " | " << number(c.heldout_gain, 3) << " | " << number(c.bic_delta, 3)
-         << " | " << (c.significant ? "yes" : "no") << " |\n";
+         << " | " << significance_text(c) << " |\n";
     }
     md << "\n";
   }

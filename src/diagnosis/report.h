@@ -16,6 +16,9 @@ namespace caskdem::diagnosis {
 void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& set, const Diagnosis& diagnosis,
                      InstructionSet isa, bool plots);
 
+// "yes", "no", or "no (at its off value)": a ranked mechanism's significance in words.
+std::string significance_text(const CandidateScore& candidate);
+
 // The baseline calibration alone (`caskdem calibrate-measured`): calibration.json.
 void write_calibration(const std::filesystem::path& directory, const MeasuredSet& set, const ModelFit& baseline);
 

@@ -85,6 +85,8 @@
 // `caskdem synthesize-measured --effect NAME --seed N` writes, at the values in its truth.json.
 
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <ostream>
 #include <string>
 
@@ -97,12 +99,21 @@
 namespace caskdem::diagnosis {
 namespace {
 
-Diagnosis diagnose_synthetic(const std::vector<Mechanism>& hidden, std::uint64_t seed, bool second_effect) {
+Diagnosis diagnose_synthetic(const std::vector<Mechanism>& hidden, std::uint64_t seed, bool second_effect,
+                             const std::string& stated_rule = "gyration") {
   const testing::TestDirectory directory;
   SyntheticSpec spec;
   spec.hidden = hidden;
   spec.seed = seed;
   write_synthetic_measured_set(directory.path(), spec);
+  if (stated_rule != "gyration") {  // the data's own rule; the specimen file states another
+    const std::filesystem::path file = directory.path() / "specimen.toml";
+    std::ifstream in(file);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string from = "half_width = \"gyration\"";
+    text.replace(text.find(from), from.size(), "half_width = \"" + stated_rule + "\"");
+    std::ofstream(file) << text;
+  }
   const MeasuredSet set = read_measured_set(directory.path());
   DiagnosisOptions options;
   options.threads = 2;
@@ -155,6 +166,24 @@ TEST(HiddenEffect, BaselineDataGiveNone) {
   RecordProperty("top_gain", std::to_string(d.ranking.front().heldout_gain));
   EXPECT_EQ(d.cause, "none") << "top: " << mechanism_name(d.ranking.front().mechanism) << " gain "
                              << d.ranking.front().heldout_gain;
+  EXPECT_EQ(d.footprint, "gyration") << "the stated rule, which made the data, is kept";
+  EXPECT_TRUE(d.baseline.adequacy.adequate) << "p " << d.baseline.adequacy.p_value;
+}
+
+// The same kind of data with a specimen file that states the wrong two-corner rule: the
+// baseline on it needs a contact stiffness several times off, and the answer must not be
+// "none" (the model is fine) but name the footprint the held-out tests prefer.
+TEST(HiddenEffect, AWrongFootprintRuleIsNamed) {
+  const Diagnosis d = diagnose_synthetic({}, 109, false, "radius");
+  RecordProperty("cause", d.cause);
+  ASSERT_EQ(d.footprints.size(), 3u);
+  for (const FootprintScore& f : d.footprints) {
+    RecordProperty("heldout_error_" + f.footprint, std::to_string(f.heldout_error));
+  }
+  EXPECT_NE(d.cause, "none");
+  EXPECT_EQ(d.cause, "footprint");
+  EXPECT_EQ(d.footprint, "gyration");
+  EXPECT_TRUE(d.footprint_changed);
 }
 
 // One effect hidden, so no second one to find. Fitted from the cause's point, the pair with

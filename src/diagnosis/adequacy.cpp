@@ -1,0 +1,92 @@
+#include "diagnosis/adequacy.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include <boost/math/distributions/chi_squared.hpp>
+
+#include "diagnosis/measures.h"
+
+namespace caskdem::diagnosis {
+
+double chi_square_survival(double x, int degrees_of_freedom) {
+  if (degrees_of_freedom < 1) return 1.0;
+  if (!(x > 0.0)) return 1.0;
+  const boost::math::chi_squared_distribution<double> chi2(degrees_of_freedom);
+  return boost::math::cdf(boost::math::complement(chi2, x));
+}
+
+namespace {
+
+void add_check(std::vector<std::string>& checks, const std::string& check) {
+  if (std::find(checks.begin(), checks.end(), check) == checks.end()) checks.push_back(check);
+}
+
+const char* kGeometryCheck =
+    "the contact geometry: the half-width rule (gyration or radius) or a distributed base ([cask] footprint), "
+    "and the contact stiffness's units";
+
+}  // namespace
+
+Adequacy judge_adequacy(const MeasuredSet& set, const std::vector<Parameter>& parameters, const FitResult& fit,
+                        const std::vector<double>& nominal, const std::vector<double>& loss,
+                        const std::vector<std::vector<double>>& residuals, const std::vector<int>& compared) {
+  Adequacy a;
+  const std::size_t tests = set.tests.size();
+  const double test_level = kAdequacyLevel / double(tests);
+  for (std::size_t t = 0; t < tests; ++t) {
+    a.statistic += loss[t];
+    a.residuals += compared[t];
+    if (chi_square_survival(loss[t], compared[t]) < test_level) a.misfitting_tests.push_back(set.tests[t].name);
+    for (std::size_t m = 0; m < residuals[t].size(); ++m) {
+      if (std::abs(residuals[t][m]) > kMisfitResidual) {
+        a.misfits.push_back({set.tests[t].name, measure_names()[m], residuals[t][m]});
+      }
+    }
+  }
+  a.degrees_of_freedom = std::max(1, a.residuals - static_cast<int>(parameters.size()));
+  a.p_value = chi_square_survival(a.statistic, a.degrees_of_freedom);
+  a.rms_residual = a.residuals > 0 ? std::sqrt(a.statistic / a.residuals) : 0.0;
+  a.fits_within_noise = a.p_value >= kAdequacyLevel;
+
+  for (std::size_t i = 0; i < parameters.size() && i < nominal.size(); ++i) {
+    const Parameter& p = parameters[i];
+    const double value = fit.best[i];
+    auto implausible = [&](const std::string& why) { a.implausible.push_back({p.name, value, nominal[i], why}); };
+    if (at_search_bound(p, value)) {
+      implausible("on its search bound [" + std::to_string(p.low) + ", " + std::to_string(p.high) +
+                  "]: the tests pull it beyond the range searched");
+    } else if (p.name == "stiffness_scale" && (value > kStiffnessFactor || value < 1.0 / kStiffnessFactor)) {
+      implausible("the contact stiffness is more than " + std::to_string(int(kStiffnessFactor)) +
+                  " times off the nominal: the contact's geometry, not its stiffness, is likely wrong");
+    } else if (p.name == "friction" && nominal[i] > 0.0 &&
+               (value > kFrictionFactor * nominal[i] || value < nominal[i] / kFrictionFactor)) {
+      implausible("far from the stated coefficient (more than a factor 1.5 off)");
+    }
+  }
+  for (const ImplausibleValue& v : a.implausible) {
+    if (v.parameter == "stiffness_scale") add_check(a.checks, kGeometryCheck);
+    if (v.parameter == "friction") {
+      add_check(a.checks, "the friction coefficient stated in specimen.toml, and the contact geometry (a cask that "
+                          "pivots at the wrong place slides where it should rock)");
+    }
+    if (v.parameter == "damping_ratio") add_check(a.checks, kGeometryCheck);
+  }
+  for (const Misfit& m : a.misfits) {
+    if (m.measure == "rotation_lag" || m.measure == "rotation_history") {
+      add_check(a.checks, "the channels' timing: a delay between the table and response channels, the sampling clock");
+    }
+    if (m.measure == "max_sliding" || m.measure == "residual_sliding" || m.measure == "sliding_history") {
+      add_check(a.checks, "the sliding channel's units, sign and datum");
+    }
+    if (m.measure == "peak_rotation" || m.measure == "rms_rotation" || m.measure == "rocking_rate") {
+      add_check(a.checks, "the rotation channel's units and sign");
+      add_check(a.checks, kGeometryCheck);
+    }
+  }
+  a.adequate = a.fits_within_noise && a.implausible.empty();
+  if (!a.adequate && a.checks.empty()) add_check(a.checks, "sensor units and timing, and " + std::string(kGeometryCheck));
+  return a;
+}
+
+}  // namespace caskdem::diagnosis

@@ -1,0 +1,111 @@
+// The calibrated baseline's adequacy (src/diagnosis/adequacy.h): a goodness-of-fit p-value
+// against chi-square, the tests and measures that misfit, and calibrated values no specimen
+// has. The chi-square survival function is checked against the published table (Abramowitz &
+// Stegun, table 26.8); the rest on residuals made to fit or misfit, and on synthetic data whose
+// specimen file states the geometry rule the data were made with, or the wrong one.
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <gtest/gtest.h>
+
+#include "diagnosis/adequacy.h"
+#include "diagnosis/diagnose.h"
+#include "diagnosis/measures.h"
+#include "diagnosis/synthesize.h"
+#include "support/temporary_files.h"
+
+namespace caskdem::diagnosis {
+namespace {
+
+using testing::TestDirectory;
+
+TEST(Adequacy, ChiSquareSurvivalMatchesThePublishedTable) {
+  // (x, nu, upper-tail probability) from the table's 5 % and 1 % points.
+  const struct {
+    double x;
+    int nu;
+    double p;
+  } rows[] = {{3.841, 1, 0.05}, {6.635, 1, 0.01}, {18.307, 10, 0.05}, {23.209, 10, 0.01}, {79.082, 60, 0.05}, {88.379, 60, 0.01}};
+  for (const auto& row : rows) EXPECT_NEAR(chi_square_survival(row.x, row.nu) / row.p, 1.0, 2e-3) << row.x << ", " << row.nu;
+}
+
+struct Made {
+  TestDirectory directory;
+  MeasuredSet set;
+};
+
+void make(Made& made, bool radius_rule) {
+  SyntheticSpec spec;
+  spec.seed = 4;
+  write_synthetic_measured_set(made.directory.path(), spec);
+  if (radius_rule) {
+    // The same data, the specimen file stating the other two-corner rule.
+    const std::filesystem::path file = made.directory.path() / "specimen.toml";
+    std::ifstream in(file);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string from = "half_width = \"gyration\"";
+    text.replace(text.find(from), from.size(), "half_width = \"radius\"");
+    std::ofstream(file) << text;
+  }
+  made.set = read_measured_set(made.directory.path());
+}
+
+TEST(Adequacy, ResidualsWithinTheirTolerancesFitAndManyBeyondDoNot) {
+  Made made;
+  make(made, false);
+  const std::vector<Parameter> parameters = ModelVariant(made.set.specimen, {}, true).parameters();
+  FitResult fit;
+  fit.best = {0.35, 0.03, 1.0};
+  const std::vector<double> nominal = fit.best;
+  const std::size_t tests = made.set.tests.size(), measures = measure_names().size();
+  const std::vector<int> compared(tests, static_cast<int>(measures));
+  const auto judged = [&](double r) {
+    const std::vector<std::vector<double>> residuals(tests, std::vector<double>(measures, r));
+    std::vector<double> loss(tests, robust_loss(residuals[0]));
+    return judge_adequacy(made.set, parameters, fit, nominal, loss, residuals, compared);
+  };
+  const Adequacy fits = judged(0.8);
+  EXPECT_TRUE(fits.adequate);
+  EXPECT_GT(fits.p_value, 0.1);
+  EXPECT_TRUE(fits.misfits.empty());
+  const Adequacy misfits = judged(3.5);
+  EXPECT_FALSE(misfits.fits_within_noise);
+  EXPECT_FALSE(misfits.adequate);
+  EXPECT_EQ(misfits.misfitting_tests.size(), tests);
+  EXPECT_EQ(misfits.misfits.size(), tests * measures);
+  EXPECT_FALSE(misfits.checks.empty());
+
+  // Within noise but at a friction twice the stated one: implausible, so not adequate.
+  fit.best = {0.70, 0.03, 1.0};
+  const std::vector<std::vector<double>> small(tests, std::vector<double>(measures, 0.5));
+  const Adequacy slippery =
+      judge_adequacy(made.set, parameters, fit, nominal, std::vector<double>(tests, robust_loss(small[0])), small, compared);
+  EXPECT_TRUE(slippery.fits_within_noise);
+  EXPECT_FALSE(slippery.adequate);
+  ASSERT_EQ(slippery.implausible.size(), 1u);
+  EXPECT_EQ(slippery.implausible[0].parameter, "friction");
+}
+
+TEST(Adequacy, TheBaselineOnItsOwnRuleFitsAndOnTheWrongRuleDoesNot) {
+  DiagnosisOptions options;
+  options.threads = 2;
+  Made right, wrong;
+  make(right, false);
+  make(wrong, true);
+  const ModelFit on_right = calibrate_baseline(right.set, options);
+  RecordProperty("p_value_right_rule", std::to_string(on_right.adequacy.p_value));
+  EXPECT_TRUE(on_right.adequacy.adequate) << "p " << on_right.adequacy.p_value << ", RMS " << on_right.adequacy.rms_residual;
+  const ModelFit on_wrong = calibrate_baseline(wrong.set, options);
+  RecordProperty("p_value_wrong_rule", std::to_string(on_wrong.adequacy.p_value));
+  EXPECT_FALSE(on_wrong.adequacy.adequate);
+  const bool stiffness_named = std::any_of(on_wrong.adequacy.implausible.begin(), on_wrong.adequacy.implausible.end(),
+                                           [](const ImplausibleValue& v) { return v.parameter == "stiffness_scale"; });
+  EXPECT_TRUE(stiffness_named || !on_wrong.adequacy.fits_within_noise);
+}
+
+}  // namespace
+}  // namespace caskdem::diagnosis
