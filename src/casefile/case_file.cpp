@@ -348,9 +348,58 @@ void read_cask_and_contact(TableReader& root, Case& c) {
   read_limits(root, c);
 }
 
+const std::vector<std::string>& motion_keys() {
+  static const std::vector<std::string> keys = {
+      "kind",
+      // sine
+      "amplitude", "frequency", "cycles", "ramp_cycles",
+      // pulse (amplitude, duration)
+      "shape",
+      // synthetic
+      "seed", "duration", "time_step", "dominant_frequency", "ground_damping", "high_pass_frequency",
+      "high_pass_damping", "rise_time", "strong_duration", "decay", "pga",
+      // record (time_step)
+      "file", "format", "unit", "scale", "target_pga", "target_pgv",
+      // any
+      "similarity_scale"};
+  return keys;
+}
+
+const KeySchema& shared_case_keys() {
+  static const KeySchema schema = {
+      {"cask", {"shape", "rounding", "mass", "density", "inertia", "diameter", "height", "half_width", "eccentricity",
+                "vertices", "depth", "centre_of_mass"}},
+      {"contact", {"normal_stiffness", "shear_stiffness", "barkan"}},
+      {"contact.barkan", {"shear_modulus", "poisson_ratio", "beta_z", "beta_x"}},
+      {"friction", {"law", "coefficient", "static", "kinetic", "decay_speed", "table", "table_file"}},
+      {"damping", {"ratio", "frequency"}},
+      {"integration", {"safety_factor", "duration", "settle_time"}},
+      {"limits", {"tip_over_angle", "lift_off_height", "pad_half_width"}},
+  };
+  return schema;
+}
+
+const KeySchema& case_file_keys() {
+  static const KeySchema schema = [] {
+    KeySchema s = {
+        {"", {"title", "cask", "contact", "friction", "damping", "integration", "limits", "motion", "free_vibration",
+              "output"}},
+    };
+    for (const KeyTable& t : shared_case_keys()) s.push_back(t);
+    KeyTable motion{"motion", motion_keys()};
+    motion.keys.push_back("vertical");
+    s.push_back(motion);
+    s.push_back({"motion.vertical", motion_keys()});
+    s.push_back({"free_vibration", {"initial_tilt_ratio", "duration", "ratios", "target_restitution"}});
+    s.push_back({"output", {"directory", "interval", "csv", "hdf5", "plot"}});
+    return s;
+  }();
+  return schema;
+}
+
 Case load_case(const std::filesystem::path& file) {
   const toml::table document = parse_toml_file(file);
-  TableReader root(document, file, "");
+  TableReader root(document, file, "", 0, &case_file_keys());
   Case c;
   c.file = file;
   c.name = file.stem().string();

@@ -1,7 +1,8 @@
 #pragma once
 // Case files: one TOML file per analysis (cask, contact, friction, damping, integration,
-// limits, motion, output). The README's "Case file reference" lists every key; an unknown
-// key, a wrong unit or an out-of-range value is an InputError naming the file, line and key.
+// limits, motion, output). docs/case-file.md lists every key (case_file_keys() below, checked
+// by tests/docs); an unknown key, a wrong unit or an out-of-range value is an InputError naming
+// the file, line and key.
 
 #include <filesystem>
 #include <memory>
@@ -79,6 +80,13 @@ struct Case {
 };
 
 Case load_case(const std::filesystem::path& file);
+
+// Every key load_case reads, table by table; reading any other is a program error.
+const KeySchema& case_file_keys();
+// The keys of the tables a case file shares with an ensemble file (cask, contact,
+// contact.barkan, friction, damping, integration, limits), and of one motion table.
+const KeySchema& shared_case_keys();
+const std::vector<std::string>& motion_keys();
 
 // The sections a case file shares with an ensemble file and a measured specimen: the cask
 // (with its nominal mass properties), contact, friction, damping, integration and limits.

@@ -1,6 +1,8 @@
 #include "casefile/toml_reader.h"
 
+#include <algorithm>
 #include <cmath>
+#include <stdexcept>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -21,8 +23,29 @@ toml::table parse_toml_file(const std::filesystem::path& file) {
   }
 }
 
-TableReader::TableReader(const toml::table& table, std::filesystem::path file, std::string prefix, long line)
-    : table_(table), file_(std::move(file)), prefix_(std::move(prefix)), line_(line) {}
+const KeyTable* find_key_table(const KeySchema& schema, std::string_view prefix) {
+  std::string path;  // the prefix without array indices
+  for (std::size_t i = 0; i < prefix.size(); ++i) {
+    if (prefix[i] == '[') {
+      i = prefix.find(']', i);
+      if (i == std::string_view::npos) break;
+      continue;
+    }
+    path += prefix[i];
+  }
+  for (const KeyTable& t : schema)
+    if (t.table == path) return &t;
+  const auto dot = path.rfind('.');
+  if (dot == std::string::npos) return nullptr;
+  const std::string any = path.substr(0, dot) + ".*";
+  for (const KeyTable& t : schema)
+    if (t.table == any) return &t;
+  return nullptr;
+}
+
+TableReader::TableReader(const toml::table& table, std::filesystem::path file, std::string prefix, long line,
+                         const KeySchema* schema)
+    : table_(table), file_(std::move(file)), prefix_(std::move(prefix)), line_(line), schema_(schema) {}
 
 bool TableReader::has(std::string_view key) const { return table_.contains(key); }
 
@@ -37,7 +60,16 @@ long TableReader::line_of(std::string_view key) const {
 
 const toml::node* TableReader::node(std::string_view key) const { return table_.get(key); }
 
-void TableReader::mark(std::string_view key) { read_.insert(std::string(key)); }
+void TableReader::mark(std::string_view key) {
+  if (schema_) {
+    const KeyTable* known = find_key_table(*schema_, prefix_);
+    if (!known || std::find(known->keys.begin(), known->keys.end(), key) == known->keys.end()) {
+      throw std::logic_error("the reader reads key " + key_path(key) +
+                             ", which its list of known keys does not hold: add it there and to the reference in docs/");
+    }
+  }
+  read_.insert(std::string(key));
+}
 
 void TableReader::missing(std::string_view key, const std::string& expected) const {
   std::vector<std::string> unread;
@@ -175,7 +207,7 @@ TableReader TableReader::table(std::string_view key) {
     throw InputError(located(file_, n ? static_cast<long>(n->source().begin.line) : line_,
                              "expected a table [" + key_path(key) + "]"));
   }
-  return TableReader(*n->as_table(), file_, key_path(key), static_cast<long>(n->source().begin.line));
+  return TableReader(*n->as_table(), file_, key_path(key), static_cast<long>(n->source().begin.line), schema_);
 }
 
 double TableReader::positive(std::string_view key, double value) const {

@@ -16,14 +16,31 @@
 
 namespace caskdem {
 
+// The keys a reader accepts, table by table. `table` is "" for the top level, a dotted path
+// for a nested table ("motion.vertical"), an array's name for each of its tables ("motions"
+// for [[motions]]), and a path ending in "*" for every table under one ("uncertain.*").
+// A TableReader given such a list treats reading a key it does not hold as a program error
+// (std::logic_error), so the list cannot fall behind the reader; the reference pages in docs/
+// are checked against it (tests/docs/test_docs.cpp).
+struct KeyTable {
+  std::string table;
+  std::vector<std::string> keys;
+};
+using KeySchema = std::vector<KeyTable>;
+
+// The keys `schema` lists for the table at `prefix` ("motions[2]" is "motions"), or null.
+const KeyTable* find_key_table(const KeySchema& schema, std::string_view prefix);
+
 // Parses a TOML file; a syntax error becomes an InputError with toml++'s line and column.
 toml::table parse_toml_file(const std::filesystem::path& file);
 
 class TableReader {
  public:
-  TableReader(const toml::table& table, std::filesystem::path file, std::string prefix, long line = 0);
+  TableReader(const toml::table& table, std::filesystem::path file, std::string prefix, long line = 0,
+              const KeySchema* schema = nullptr);
 
   const std::filesystem::path& file() const { return file_; }
+  const KeySchema* schema() const { return schema_; }
   bool has(std::string_view key) const;
   std::string key_path(std::string_view key) const;  // "cask.mass"
   long line_of(std::string_view key) const;           // line of the key's value (0 if absent)
@@ -53,7 +70,7 @@ class TableReader {
   double in_range(std::string_view key, double value, double low, double high) const;
 
   // Marks a key as known when the caller reads its value through toml++ itself.
-  void accept(std::string_view key) { read_.insert(std::string(key)); }
+  void accept(std::string_view key) { mark(key); }
 
   // Unknown keys are errors: call when every known key has been read.
   void reject_unknown_keys() const;
@@ -69,6 +86,7 @@ class TableReader {
   std::string prefix_;
   long line_;
   std::set<std::string, std::less<>> read_;
+  const KeySchema* schema_ = nullptr;
 };
 
 // A path in a case file is relative to the file's directory.

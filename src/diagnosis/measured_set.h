@@ -1,7 +1,7 @@
 #pragma once
 // A measured-data directory: `specimen.toml` (the cask, floor and contact as in a case file,
 // with the values the experimenter knows, and an optional [diagnosis] table) and one CSV per
-// test (src/diagnosis/measured_test.h). README, "Measured data", has an example.
+// test (src/diagnosis/measured_test.h). docs/measured-data.md has an example.
 //
 //   [diagnosis]
 //   heldout = ["test5", "test6"]   tests kept out of every fit and used to score (default:

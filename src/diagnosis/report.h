@@ -1,5 +1,5 @@
 #pragma once
-// What `caskdem diagnose` writes (README, "Measured data"):
+// What `caskdem diagnose` writes (docs/measured-data.md, "Outputs"):
 //   diagnosis.json  cause, second_cause, ranking (each mechanism's heldout_gain,
 //                   information_criterion_delta, fitted parameters with standard errors, gain
 //                   per error measure), baseline, residual structure, data issues

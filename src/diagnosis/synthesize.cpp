@@ -115,7 +115,7 @@ ratio = 0.03
 frequency = "135 Hz"
 
 [integration]
-safety_factor = 0.05   # 5 times the paper's step, for speed; a test near a rocking bifurcation can change branch with it (README, "Time step")
+safety_factor = 0.05   # 5 times the paper's step, for speed; a test near a rocking bifurcation can change branch with it (docs/time-step.md)
 
 )";
 }

@@ -94,9 +94,32 @@ std::string intensity_name(IntensityMeasure measure) {
   return "pga";
 }
 
+const KeySchema& ensemble_file_keys() {
+  static const KeySchema schema = [] {
+    KeySchema s = {
+        {"", {"title", "cask", "contact", "friction", "damping", "integration", "limits", "free_vibration", "motions",
+              "uncertain", "intensity", "sampling", "limit_states", "fragility", "run"}},
+    };
+    for (const KeyTable& t : shared_case_keys()) s.push_back(t);
+    s.push_back({"free_vibration", {"initial_tilt_ratio", "ratios"}});
+    KeyTable motions{"motions", motion_keys()};
+    motions.keys.push_back("name");
+    s.push_back(motions);
+    s.push_back({"uncertain", uncertain_parameter_names()});
+    s.push_back({"uncertain.*", {"distribution", "value", "low", "high", "mean", "std", "median", "log_std"}});
+    s.push_back({"intensity", {"measure", "levels", "realisations"}});
+    s.push_back({"sampling", {"method", "seed"}});
+    s.push_back({"limit_states", {"tip_over", "rotation_ratio", "sliding"}});
+    s.push_back({"fragility", {"bootstrap", "confidence"}});
+    s.push_back({"run", {"block_lanes", "checkpoint_interval"}});
+    return s;
+  }();
+  return schema;
+}
+
 EnsembleSpec load_ensemble(const std::filesystem::path& file) {
   const toml::table document = parse_toml_file(file);
-  TableReader root(document, file, "");
+  TableReader root(document, file, "", 0, &ensemble_file_keys());
   EnsembleSpec e;
   e.file = file;
   e.name = file.stem().string();
@@ -133,7 +156,8 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
   for (std::size_t i = 0; i < list->size(); ++i) {
     const toml::table* table = (*list)[i].as_table();
     if (!table) throw InputError(located(file, static_cast<long>((*list)[i].source().begin.line), "key motions: expected tables"));
-    TableReader t(*table, file, "motions[" + std::to_string(i) + "]", static_cast<long>(table->source().begin.line));
+    TableReader t(*table, file, "motions[" + std::to_string(i) + "]", static_cast<long>(table->source().begin.line),
+                  root.schema());
     std::string label = t.optional_string("name").value_or("");
     MotionSpec m = read_motion(t);
     if (m.kind == MotionSpec::Kind::none) t.fail("kind", "an ensemble motion must move the table");

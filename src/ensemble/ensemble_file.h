@@ -1,8 +1,9 @@
 #pragma once
 // Ensemble files (ensembles/*.toml): the cask and contact as in a case file, the uncertain
 // parameters and their distributions, the motions, the intensity measure and its stripes,
-// the sampling, and the limit states. The README's "Ensemble file reference" lists every
-// key; problems are InputErrors naming the file, line and key.
+// the sampling, and the limit states. docs/ensemble-file.md lists every key
+// (ensemble_file_keys() below, checked by tests/docs); problems are InputErrors naming the
+// file, line and key.
 
 #include <cstdint>
 #include <filesystem>
@@ -63,5 +64,8 @@ struct EnsembleSpec {
 };
 
 EnsembleSpec load_ensemble(const std::filesystem::path& file);
+
+// Every key load_ensemble reads, table by table; reading any other is a program error.
+const KeySchema& ensemble_file_keys();
 
 }  // namespace caskdem

@@ -4,7 +4,7 @@
 // The file is written whole to a temporary name and renamed over the previous one, so the
 // file on disk is always a complete, valid HDF5 file: a run killed at any moment leaves the
 // last checkpoint, with its mask of completed realisations, and `--resume` continues from it.
-// Layout (README, "Output layout"):
+// Layout (docs/output.md):
 //   /                   attributes: caskdem_version, ensemble_file, ensemble_toml, title,
 //                       wall_time_s, completed, realisations, time_step_s, intensity_measure, ...
 //   /realisations/      one dataset per field below, length = realisations; `completed` (0/1)

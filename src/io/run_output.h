@@ -1,7 +1,7 @@
 #pragma once
 // What `caskdem run` writes: the time history (CSV and HDF5), the summary (printed, JSON
-// and HDF5 attributes) and the plot. The HDF5 layout is documented in the README
-// ("Output layout") and read by src/plots/plot_run.py.
+// and HDF5 attributes) and the plot. The HDF5 layout is documented in docs/output.md
+// and read by src/plots/plot_run.py.
 
 #include <filesystem>
 #include <ostream>

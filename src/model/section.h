@@ -5,7 +5,7 @@
 // A cylinder (diameter D = 2r, height H = 2h, mass m) becomes a rectangle of half-width b
 // with the cylinder's mass, centre of mass and moment of inertia I = m (r^2/4 + h^2/3)
 // (about a horizontal diameter through the centre of mass; or the value given). Two rules
-// for b, both documented in the README:
+// for b, both documented in docs/model.md ("Cask section"):
 //   radius    b = r: the rigid cylinder's own pivots, so alpha = atan(r / h) and the
 //             rocking of a rigid cylinder in the plane is reproduced (same alpha, I_O, p, e).
 //   gyration  the source paper's choice: b = r/2, the radius of gyration of the circular

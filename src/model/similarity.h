@@ -31,7 +31,7 @@ struct SimilarityRow {
   std::string quantity;
   DimensionExponents dimensions;
 };
-// The quantities the README's table and `caskdem similarity` list.
+// The quantities docs/model.md ("Similarity law") and `caskdem similarity` list.
 const std::vector<SimilarityRow>& similarity_table();
 
 }  // namespace caskdem

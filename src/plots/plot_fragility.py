@@ -2,7 +2,7 @@
 bands and the stripe probabilities with their binomial intervals.
 
 Usage: plot_fragility.py RESULT.h5 OUT.png
-Reads the layout written by `caskdem ensemble` (README, "Output layout").
+Reads the layout written by `caskdem ensemble` (docs/output.md).
 """
 import math
 import sys

@@ -1,7 +1,7 @@
 """Time-history plot of one caskdem run: rotation, sliding and table acceleration.
 
 Usage: plot_run.py RUN.h5 OUT.png
-Reads the layout written by `caskdem run` (README, "Output layout").
+Reads the layout written by `caskdem run` (docs/output.md).
 """
 import sys
 

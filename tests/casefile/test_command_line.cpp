@@ -87,7 +87,7 @@ TEST_F(CommandLine, RunWritesSummaryHistoryHdf5AndPlot) {
     EXPECT_TRUE(std::filesystem::exists(out / name)) << name;
     EXPECT_GT(std::filesystem::file_size(out / name), 100u) << name;
   }
-  // The README promises h5py-readable output: read it back with Debian's python.
+  // docs/output.md promises h5py-readable output: read it back with Debian's python.
   const Outcome read = run_caskdem("--version");
   EXPECT_EQ(read.status, 0);
   const std::string check = "/usr/bin/python3 -c \"import h5py; f = h5py.File('" + (out / "run.h5").string() +

@@ -1,6 +1,6 @@
 // Validation 7, convergence in the time step: the maximum rotation changes by less than
 // 0.5 % between the paper's safety factor f_s = 0.01 and f_s = 0.005, on a sinusoidal and a
-// recorded motion. Larger factors are reported (README, "Time step") as the ground for a
+// recorded motion. Larger factors are reported (docs/time-step.md) as the ground for a
 // faster default.
 
 #include <cmath>
