@@ -95,6 +95,33 @@ void kernel(benchmark::State& state, InstructionSet isa, FrictionLaw law) {
       benchmark::Counter(lane_steps * operations.flops / core_peak(width_of(isa)), benchmark::Counter::kIsRate);
 }
 
+// What a distributed footprint costs (model/section.h): the same work with the 1/3 model's
+// base as two corners at the gyration half-width (points = 0) or N contacts across the diameter.
+void footprint(benchmark::State& state, InstructionSet isa, int points) {
+  if (!instruction_set_available(isa)) {
+    state.SkipWithError((instruction_set_name(isa) + " is not available on this machine").c_str());
+    return;
+  }
+  Case c = paper_model(FrictionLaw::exponential);
+  if (points > 0) {
+    c.cask.cylinder.rule = HalfWidthRule::radius;
+    c.cask.cylinder.footprint_points = points;
+    c.model.section = cylinder_section(c.cask.cylinder, c.model.section.rounding);
+  }
+  const Model model = build_model(c.model, c.parameters);
+  const std::vector<double> table = table_acceleration(model.time_step, kSteps);
+  const std::vector<double> still(kSteps, 0.0);
+  for (auto _ : state) {
+    state.PauseTiming();
+    LaneBlock block = make_block(model, c.parameters, kLanes);
+    state.ResumeTiming();
+    advance_block(isa, model, block, table.data(), still.data(), 0, kSteps);
+    benchmark::DoNotOptimize(block.view().body);
+  }
+  state.counters["contacts"] = double(model.corner_count);
+  state.counters["lane_steps_per_s"] = benchmark::Counter(double(kLanes) * kSteps * state.iterations(), benchmark::Counter::kIsRate);
+}
+
 // The scalar deterministic code (the reference path, with its time-history bookkeeping off)
 // on the same work: one realisation after another.
 void deterministic(benchmark::State& state, FrictionLaw law) {
@@ -140,6 +167,10 @@ BENCHMARK_CAPTURE(kernel, scalar_constant, InstructionSet::scalar, FrictionLaw::
 BENCHMARK_CAPTURE(kernel, sse2_constant, InstructionSet::sse2, FrictionLaw::constant)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(kernel, avx2_constant, InstructionSet::avx2, FrictionLaw::constant)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(kernel, avx512f_constant, InstructionSet::avx512f, FrictionLaw::constant)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(footprint, avx2_two_corners, InstructionSet::avx2, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(footprint, avx2_distributed_9, InstructionSet::avx2, 9)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(footprint, avx512f_two_corners, InstructionSet::avx512f, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(footprint, avx512f_distributed_9, InstructionSet::avx512f, 9)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(deterministic, exponential, FrictionLaw::exponential)->Unit(benchmark::kMillisecond);
 BENCHMARK(threads)->Threads(1)->Threads(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 

@@ -367,8 +367,8 @@ const std::vector<std::string>& motion_keys() {
 
 const KeySchema& shared_case_keys() {
   static const KeySchema schema = {
-      {"cask", {"shape", "rounding", "mass", "density", "inertia", "diameter", "height", "half_width", "eccentricity",
-                "vertices", "depth", "centre_of_mass"}},
+      {"cask", {"shape", "rounding", "mass", "density", "inertia", "diameter", "height", "half_width", "footprint",
+                "footprint_points", "eccentricity", "vertices", "depth", "centre_of_mass"}},
       {"contact", {"normal_stiffness", "shear_stiffness", "barkan"}},
       {"contact.barkan", {"shear_modulus", "poisson_ratio", "beta_z", "beta_x"}},
       {"friction", {"law", "coefficient", "static", "kinetic", "decay_speed", "table", "table_file"}},
