@@ -97,3 +97,30 @@ TEST_F(Reproducibility, AnyRealisationRerunAloneGivesItsResult) {
 
 }  // namespace
 }  // namespace caskdem
+
+namespace caskdem {
+namespace {
+
+// A distributed footprint (nine contacts across the base) is the same model description on
+// every path: the same bits on every instruction set as the scalar reference.
+TEST(ReproducibilityDistributed, SameBitsOnEveryInstructionSet) {
+  EnsembleSpec spec = load_ensemble(std::string(CASKDEM_SOURCE_DIR) + "/tests/ensemble/data/mixed-outcomes.toml");
+  spec.realisations_per_stripe = 12;
+  spec.base.cask.cylinder.rule = HalfWidthRule::radius;
+  spec.base.cask.cylinder.footprint_points = kDefaultFootprintPoints;
+  spec.base.model.section = cylinder_section(spec.base.cask.cylinder, spec.base.model.section.rounding);
+  const EnsemblePlan plan(spec, InstructionSet::scalar);
+  std::vector<std::int64_t> all;
+  for (std::int64_t i = 0; i < plan.size(); ++i) all.push_back(i);
+  const std::vector<RealisationOutcome> reference = run(plan, all, 16, InstructionSet::scalar, 1);
+  int rocked = 0;
+  for (const RealisationOutcome& o : reference) rocked += o.impacts > 0;
+  EXPECT_GT(rocked, 0) << "the footprint's contacts were exercised";
+  for (InstructionSet isa : {InstructionSet::sse2, InstructionSet::avx2, InstructionSet::avx512f}) {
+    if (!instruction_set_available(isa)) continue;
+    EXPECT_EQ(hash_of(run(plan, all, 16, isa, 2)), hash_of(reference)) << instruction_set_name(isa);
+  }
+}
+
+}  // namespace
+}  // namespace caskdem
