@@ -16,6 +16,10 @@
 # fitted value and its standard error, to check the reported uncertainties against the truth
 # (bench/parameter_coverage.py).
 #
+# GENERATOR=PATH takes the data from the independent generator (tests/independent) instead of
+# caskdem's own model. The search for a second effect is skipped (it does not change the
+# cause); SECOND_EFFECT= (empty) runs it.
+#
 # The seeds here start at 1001 so they are not the ones the CI tests use (101..110). About
 # 1 to 5 minutes per data set on 2 cores. Appends to OUT_CSV, so a stopped run resumes.
 set -eu
@@ -29,7 +33,7 @@ uncertainty=${7:-curvature}
 caskdem="$build/src/caskdem"
 . "$(dirname "$0")/synthetic_sets.sh"
 parameters_out="${out%.csv}-parameters.csv"
-[ -s "$out" ] || echo "hidden,seed,cause,second_cause,hidden_gain,hidden_bic_delta,hidden_significant,top,top_gain,wall_s" >"$out"
+[ -s "$out" ] || echo "hidden,seed,cause,second_cause,hidden_gain,hidden_bic_delta,hidden_significant,top,top_gain,wall_s,footprint,adequate,p_value" >"$out"
 [ -s "$parameters_out" ] || echo "hidden,seed,model,parameter,truth,fitted,standard_error,at_search_bound,training_objective,training_residuals" >"$parameters_out"
 
 # One data set: diagnosed, its row and its hidden model's parameter rows.
@@ -37,7 +41,7 @@ diagnose_set() {
   dir=$1 effect=$2 seed=$3
   # The generator's specimen.toml ends with its [diagnosis] table.
   [ "$inputs" = 1 ] || echo "input_realisations = $inputs" >>"$dir/specimen.toml"
-  "$caskdem" diagnose "$dir" --out "$dir/diagnosis" --quiet --no-plot --uncertainty "$uncertainty" >/dev/null
+  "$caskdem" diagnose "$dir" --out "$dir/diagnosis" --quiet --no-plot --uncertainty "$uncertainty" ${SECOND_EFFECT:---no-second-effect} >/dev/null
   /usr/bin/python3 - "$dir/diagnosis/diagnosis.json" "$effect" "$seed" >>"$out" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))
@@ -48,7 +52,8 @@ top = rank[0]
 fields = [effect, seed, d["cause"], d["second_cause"] or "",
           "%.4f" % hidden["heldout_gain"] if hidden else "", "%.2f" % hidden["information_criterion_delta"] if hidden else "",
           str(hidden["significant"]).lower() if hidden else "", top["mechanism"], "%.4f" % top["heldout_gain"],
-          "%.1f" % d["wall_time_s"]]
+          "%.1f" % d["wall_time_s"], d.get("footprint") or "",
+          str(d["baseline"]["adequacy"]["adequate"]).lower(), "%.3g" % d["baseline"]["adequacy"]["goodness_of_fit"]["p_value"]]
 print(",".join(fields))
 PY
   /usr/bin/python3 "$(dirname "$0")/parameter_rows.py" "$dir/diagnosis/diagnosis.json" "$dir/truth.json" "$effect" "$seed" >>"$parameters_out"

@@ -103,7 +103,7 @@ void add_diagnose(CLI::App& app) {
     struct Options {
       std::string directory, out;
       int threads = 0;
-      bool quiet = false, no_plot = false;
+      bool quiet = false, no_plot = false, no_second_effect = false;
       std::string uncertainty = "jackknife";
     };
     auto options = std::make_shared<Options>();
@@ -114,6 +114,8 @@ void add_diagnose(CLI::App& app) {
     cmd->add_option("--threads", options->threads, "OpenMP threads")->check(thread_count());
     cmd->add_flag("--quiet", options->quiet, "No progress lines");
     cmd->add_flag("--no-plot", options->no_plot, "Do not make the PNGs");
+    cmd->add_flag("--no-second-effect", options->no_second_effect,
+                  "Do not fit the other mechanisms on top of the cause (faster; the cause is the same)");
     add_uncertainty_option(cmd, options->uncertainty, ", for the baseline and the cause");
     cmd->callback([options]() {
       const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
@@ -121,8 +123,9 @@ void add_diagnose(CLI::App& app) {
       const std::filesystem::path out =
           options->out.empty() ? std::filesystem::path(options->directory) / "diagnosis" : std::filesystem::path(options->out);
       prepare_output_directory(out);
-      const diagnosis::Diagnosis d =
-          diagnosis::diagnose(set, options_for(options->threads, options->quiet, options->uncertainty));
+      diagnosis::DiagnosisOptions run_options = options_for(options->threads, options->quiet, options->uncertainty);
+      run_options.look_for_second_effect = !options->no_second_effect;
+      const diagnosis::Diagnosis d = diagnosis::diagnose(set, run_options);
       std::cout << "cause           " << d.cause << "\n";
       for (const diagnosis::FootprintScore& f : d.footprints) {
         std::cout << "footprint       " << std::left << std::setw(12) << f.footprint << " held-out error "

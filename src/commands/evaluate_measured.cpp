@@ -26,6 +26,7 @@
 #include "core/error.h"
 #include "core/text.h"
 #include "diagnosis/diagnose.h"
+#include "diagnosis/footprint.h"
 
 namespace caskdem::commands {
 
@@ -126,6 +127,15 @@ void take_from_file(const std::filesystem::path& file, const diagnosis::ModelVar
   }
 }
 
+// The footprint rule a diagnosis.json kept ("" for any other file, or none).
+std::string footprint_kept_in(const std::string& file) {
+  if (file.empty()) return "";
+  std::ifstream in(file);
+  const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
+  if (j.is_discarded() || !j.is_object() || !j.contains("footprint") || !j["footprint"].is_string()) return "";
+  return j["footprint"].get<std::string>();
+}
+
 void take_assignment(const std::string& assignment, const diagnosis::ModelVariant& variant, std::vector<double>& point,
                      std::vector<std::string>& source) {
   const std::vector<diagnosis::Parameter>& parameters = variant.parameters();
@@ -183,7 +193,7 @@ void print_data_issues(const diagnosis::MeasuredSet& set) {
 
 void add_evaluate_measured(CLI::App& app) {
   struct Options {
-    std::string directory, model = "baseline", from, json;
+    std::string directory, model = "baseline", from, json, footprint;
     std::vector<std::string> at;
     int threads = 0;
     bool residuals = false;
@@ -196,12 +206,27 @@ void add_evaluate_measured(CLI::App& app) {
                   "baseline (default), a mechanism, or several joined by ',' or '+' (e.g. floor_compliance)");
   cmd->add_option("--at", options->at, "NAME=VALUE in SI units; repeat or separate with ','")->delimiter(',');
   cmd->add_option("--from", options->from, "Take the model's values from a fit in a diagnosis.json or calibration.json, or from a truth.json of synthesize-measured");
+  cmd->add_option("--footprint", options->footprint,
+                  "Judge on this footprint rule: gyration, radius or distributed (default: the one a diagnosis.json "
+                  "given with --from kept, else the specimen's)")
+      ->check(CLI::IsMember({"gyration", "radius", "distributed"}));
   cmd->add_option("--json", options->json, "Also write the evaluation (per-test residuals) to this JSON file");
   cmd->add_option("--threads", options->threads, "OpenMP threads")->check(thread_count());
   cmd->add_flag("--residuals", options->residuals, "Print every test's scaled residual per measure");
   cmd->callback([options]() {
-    const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
+    diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
     print_data_issues(set);
+    // A diagnosis's fits belong to the footprint rule it kept, which need not be the stated one.
+    const std::string footprint = !options->footprint.empty() ? options->footprint : footprint_kept_in(options->from);
+    if (!footprint.empty()) {
+      for (diagnosis::Footprint f : diagnosis::all_footprints()) {
+        if (diagnosis::footprint_name(f) != footprint) continue;
+        if (!diagnosis::footprint_of(set.specimen)) {
+          throw InputError("--footprint " + footprint + ": only a cylindrical specimen has footprint rules");
+        }
+        set.specimen = diagnosis::with_footprint(set.specimen, f);
+      }
+    }
     const std::vector<diagnosis::Mechanism> mechanisms = diagnosis::parse_mechanism_list(options->model, "--model");
     const diagnosis::ModelVariant variant(set.specimen, mechanisms, set.vertical_measured);
     std::vector<double> point = variant.reference();

@@ -599,6 +599,7 @@ Diagnosis diagnose(const MeasuredSet& given, const DiagnosisOptions& options) {
     d.footprint_changed = footprint->set.has_value();
   }
   if (const std::optional<Footprint> f = footprint_of(set.specimen)) d.footprint = footprint_name(*f);
+  d.specimen = set.specimen;
   const ModelVariant baseline_variant(set.specimen, {}, set.vertical_measured);
   d.structure = residual_structure(set, yardstick.references, d.baseline, baseline_variant.model(),
                                    fitted_histories(set, d.baseline, options.isa));

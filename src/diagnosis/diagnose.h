@@ -133,6 +133,7 @@ struct Diagnosis {
   std::string footprint;                    // the rule the mechanisms were fitted on
   bool footprint_changed = false;           // it is not the specimen's stated rule
   std::vector<FootprintScore> footprints;   // every rule tried (empty: not a cylinder, or not asked)
+  Case specimen;                            // the specimen the fits were made on (on the rule kept)
   std::string second_cause;  // empty when no second effect
   ModelFit baseline;
   std::vector<CandidateScore> ranking;         // by held-out gain

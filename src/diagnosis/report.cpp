@@ -256,10 +256,12 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   j["wall_time_s"] = d.wall_seconds;
   std::ofstream(directory / "diagnosis.json") << j.dump(2) << "\n";
 
-  // Histories of the baseline and the chosen model, for the plots.
-  const std::vector<SimulatedHistory> baseline = fitted_histories(set, d.baseline, isa);
+  // Histories of the baseline and the chosen model, for the plots, on the footprint they were fitted on.
+  MeasuredSet fitted = set;
+  fitted.specimen = d.specimen;
+  const std::vector<SimulatedHistory> baseline = fitted_histories(fitted, d.baseline, isa);
   std::vector<SimulatedHistory> extended;
-  if (chosen) extended = fitted_histories(set, chosen->model, isa);
+  if (chosen) extended = fitted_histories(fitted, chosen->model, isa);
   write_histories(directory / "histories.h5", set, baseline, chosen ? &extended : nullptr,
                   chosen ? chosen->model.name : std::string());
 
