@@ -1,0 +1,204 @@
+#include "measured_set.h"
+
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <numbers>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "excitation.h"
+#include "random_stream.h"
+#include "simulate.h"
+
+#ifndef INDEPENDENT_MOTIONS_DIR
+#define INDEPENDENT_MOTIONS_DIR "../shared/motions"
+#endif
+
+namespace independent {
+
+namespace {
+
+constexpr double kSampleStep = 0.005;                 // s: 200 Hz
+const double kTimeFactor = 1.0 / std::sqrt(3.0);      // 1/3-scale similitude
+constexpr double kSineAmplitude = 0.010;              // m
+constexpr double kG = 9.80665;
+
+struct Design {
+  std::string description;
+  std::function<double(double)> horizontal, vertical_shape;  // vertical_shape: peak 1 x horizontal peak
+  double duration = 0.0;
+};
+
+struct Earthquake {
+  const char* label;
+  const char* horizontal;
+  const char* vertical;
+  double start, end;  // prototype window, s
+  double pga;         // model peak, in g
+};
+
+Design sine_design(double frequency, double cycles) {
+  Design d;
+  d.description = "sine " + std::to_string(frequency).substr(0, 3) + " Hz, 10 mm";
+  d.horizontal = ramped_sine(kSineAmplitude, frequency, cycles);
+  // The vertical actuator runs the same frequency a quarter cycle behind, at unit peak ratio.
+  d.vertical_shape = ramped_sine(kSineAmplitude, frequency, cycles, 0.5 * std::numbers::pi);
+  d.duration = ramped_sine_duration(frequency, cycles);
+  return d;
+}
+
+Design earthquake_design(const Earthquake& e, const std::filesystem::path& motions) {
+  const auto dir = motions / "three-component";
+  const Accelerogram h = model_scale_window(read_at2(dir / e.horizontal), e.start, e.end, 0.5, kTimeFactor, e.pga * kG);
+  // The record's own vertical, scaled so that its peak equals the horizontal peak; the drawn
+  // ratio multiplies it when the vertical motion is hidden in the data.
+  const Accelerogram v = model_scale_window(read_at2(dir / e.vertical), e.start, e.end, 0.5, kTimeFactor, e.pga * kG);
+  Design d;
+  d.description = std::string(e.label) + ", time / sqrt(3), " + std::to_string(e.pga).substr(0, 4) + " g";
+  d.horizontal = h;
+  d.vertical_shape = v;
+  d.duration = h.duration();
+  return d;
+}
+
+std::vector<Design> programme(const std::filesystem::path& motions) {
+  static const Earthquake elcentro{"El Centro 1940 180", "elcentro1940_RSN6_H1_180.AT2", "elcentro1940_RSN6_UP.AT2",
+                                   0.0, 15.0, 0.70};
+  static const Earthquake kobe{"Kobe 1995 KJMA 000", "kobe1995_RSN1106_KJMA_H1_000.AT2", "kobe1995_RSN1106_KJMA_UP.AT2",
+                               4.0, 19.0, 0.65};
+  static const Earthquake loma{"Loma Prieta 1989 Corralitos 000", "lomaprieta1989_RSN753_Corralitos_H1_000.AT2",
+                               "lomaprieta1989_RSN753_Corralitos_UP.AT2", 0.0, 15.0, 0.70};
+  return {sine_design(3.6, 6.0), sine_design(4.2, 6.0), earthquake_design(elcentro, motions),
+          sine_design(5.0, 6.0), earthquake_design(kobe, motions),     earthquake_design(loma, motions)};
+}
+
+std::string specimen_text(const std::string& half_width) {
+  return R"(title = "Shaking-table tests of the 1/3 model cask"
+# Made by caskdem_independent_data (tests/independent): a model written apart from caskdem's.
+# What the experimenter knows, with nominal values; the truth is in truth.json.
+
+[cask]
+shape = "cylinder"
+diameter = "0.95 m"
+height = "2.033 m"
+density = "8.743 g/cm^3"
+half_width = ")" + half_width + R"("
+rounding = "0.5 cm"
+
+[contact]
+normal_stiffness = "2.38e3 bar/cm"
+shear_stiffness = "2.21e3 bar/cm"
+
+[friction]
+law = "constant"
+coefficient = 0.6
+
+[damping]
+ratio = 0.03
+frequency = "135 Hz"
+
+[integration]
+safety_factor = 0.05
+
+[diagnosis]
+heldout = ["test2", "test5"]
+starts = 6
+evaluations = 50
+seed = 1
+)";
+}
+
+}  // namespace
+
+MeasuredSetResult write_independent_measured_set(const std::filesystem::path& directory, const std::string& effect,
+                                                 std::uint64_t seed, const MeasuredSetOptions& options) {
+  if (options.half_width != "gyration" && options.half_width != "radius")
+    throw std::invalid_argument("half width must be 'gyration' or 'radius', not '" + options.half_width + "'");
+  MeasuredSetResult result;
+  result.truth = draw_truth(effect, seed);
+  const Truth& truth = result.truth;
+  const std::vector<Design> designs = programme(options.motions.empty() ? INDEPENDENT_MOTIONS_DIR : options.motions);
+  std::vector<int> chosen = options.tests;
+  if (chosen.empty())
+    for (int i = 1; i <= static_cast<int>(designs.size()); ++i) chosen.push_back(i);
+
+  std::filesystem::create_directories(directory);
+  std::ofstream(directory / "specimen.toml") << specimen_text(options.half_width);
+
+  const CylinderModel model(truth.cask);
+  const State rest = model.equilibrium();
+  nlohmann::json tests_json = nlohmann::json::array();
+  for (int number : chosen) {
+    if (number < 1 || number > static_cast<int>(designs.size()))
+      throw std::invalid_argument("no test " + std::to_string(number));
+    const Design& design = designs[number - 1];
+    const double ratio = truth.vertical_ratio;
+    TableInput input;
+    input.horizontal = design.horizontal;
+    if (ratio > 0.0) input.vertical = [&design, ratio](double t) { return ratio * design.vertical_shape(t); };
+
+    const auto samples = static_cast<std::size_t>(std::floor((design.duration + options.free_time) / kSampleStep)) + 1;
+    std::vector<double> times(samples);
+    for (std::size_t k = 0; k < samples; ++k) times[k] = k * kSampleStep - truth.sensor_delay;
+    const Response response = simulate(model, input, rest, times);
+
+    const std::string name = "test" + std::to_string(number);
+    RandomStream noise(seed, 100 + static_cast<std::uint64_t>(number));
+    std::ofstream csv(directory / (name + ".csv"));
+    csv << "# shaking-table test " << name << ": " << design.description << "; SI units, 200 Hz\n";
+    csv << "t,table_acc,theta,slide,table_acc_v\n";
+    TestSummary summary{name};
+    char line[256];
+    for (std::size_t k = 0; k < samples; ++k) {
+      const double t = k * kSampleStep;
+      const double av = input.vertical ? input.vertical(t) : 0.0;
+      // Noise drawn in a fixed order per sample, so every channel's noise is the seed's alone.
+      const double n0 = noise.normal(), n1 = noise.normal(), n2 = noise.normal(), n3 = noise.normal();
+      std::snprintf(line, sizeof line, "%.3f,%.9g,%.9g,%.9g,%.9g\n", t, design.horizontal(t) + options.table_noise * n0,
+                    response.rotation[k] + options.rotation_noise * n1, response.slide[k] + options.slide_noise * n2,
+                    av + options.table_noise * n3);
+      csv << line;
+      summary.peak_rotation = std::max(summary.peak_rotation, std::abs(response.rotation[k]));
+      summary.peak_slide = std::max(summary.peak_slide, std::abs(response.slide[k]));
+    }
+    summary.final_slide = response.slide.back();
+    summary.tipped_over = response.tipped_over;
+    summary.evaluations = response.steps;
+    result.tests.push_back(summary);
+    tests_json.push_back({{"name", name},
+                          {"motion", design.description},
+                          {"peak_rotation_rad", summary.peak_rotation},
+                          {"peak_slide_m", summary.peak_slide},
+                          {"final_slide_m", summary.final_slide},
+                          {"tipped_over", summary.tipped_over}});
+  }
+
+  nlohmann::json j;
+  j["generator"] = "independent";
+  j["hidden"] = truth.effect == "none" ? std::vector<std::string>{} : std::vector<std::string>{truth.effect};
+  j["effect"] = truth.effect;
+  for (const auto& [key, value] : truth.effect_parameters) j["effect_parameters"][key] = value;
+  const CaskParameters& c = truth.cask;
+  j["true"] = {{"friction", truth.friction},
+               {"normal_stiffness_N_m3", truth.stiffness},
+               {"stiffness_scale", truth.stiffness_scale},
+               {"standing_damping_ratio", truth.damping_ratio},
+               {"hunt_crossley_k_h", c.k_h},
+               {"hunt_crossley_exponent", c.exponent},
+               {"hunt_crossley_c_h_s_m", c.c_h},
+               {"friction_regularisation_m_s", c.regularisation},
+               {"static_settlement_m", c.half_height + c.camber - rest[1]},
+               {"mass_kg", c.mass()},
+               {"slenderness_rad", c.slenderness()}};
+  j["specimen_half_width"] = options.half_width;
+  j["seed"] = seed;
+  j["noise"] = {{"rotation_rad", options.rotation_noise}, {"slide_m", options.slide_noise}, {"table_m_s2", options.table_noise}};
+  j["tests"] = tests_json;
+  std::ofstream(directory / "truth.json") << j.dump(2) << "\n";
+  return result;
+}
+
+}  // namespace independent
