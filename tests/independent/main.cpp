@@ -1,6 +1,6 @@
 // caskdem_independent_data: writes a measured-data directory made with the independent
 // cylinder model, for testing `caskdem diagnose` on data its own model did not make.
-//   caskdem_independent_data --out DIR --effect NAME|none --seed N [--half-width gyration|radius]
+//   caskdem_independent_data --out DIR --effect NAME|none --seed N [--footprint distributed|gyration|radius]
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -12,7 +12,7 @@ namespace {
 
 int usage(const std::string& problem) {
   std::cerr << "caskdem_independent_data: " << problem << "\n"
-            << "usage: caskdem_independent_data --out DIR --effect NAME|none --seed N [--half-width gyration|radius]\n"
+            << "usage: caskdem_independent_data --out DIR --effect NAME|none --seed N [--footprint distributed|gyration|radius]\n"
             << "effects: none";
   for (const auto& name : independent::effect_names()) std::cerr << ", " << name;
   std::cerr << "\n";
@@ -22,11 +22,11 @@ int usage(const std::string& problem) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string out, effect, seed_text, half_width = "gyration";
+  std::string out, effect, seed_text, footprint = "distributed";
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     std::string* target = arg == "--out" ? &out : arg == "--effect" ? &effect : arg == "--seed" ? &seed_text
-                        : arg == "--half-width" ? &half_width : nullptr;
+                        : arg == "--footprint" ? &footprint : nullptr;
     if (!target) return usage("unknown argument '" + arg + "'");
     if (i + 1 >= argc) return usage(arg + " needs a value");
     *target = argv[++i];
@@ -44,13 +44,13 @@ int main(int argc, char** argv) {
   } catch (const std::exception&) {
     return usage("--seed must be a non-negative integer, not '" + seed_text + "'");
   }
-  if (half_width != "gyration" && half_width != "radius")
-    return usage("--half-width must be gyration or radius, not '" + half_width + "'");
+  if (footprint != "distributed" && footprint != "gyration" && footprint != "radius")
+    return usage("--footprint must be distributed, gyration or radius, not '" + footprint + "'");
 
   try {
     const auto start = std::chrono::steady_clock::now();
     independent::MeasuredSetOptions options;
-    options.half_width = half_width;
+    options.footprint = footprint;
     const auto result = independent::write_independent_measured_set(out, effect, seed, options);
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     std::printf("%s: effect %s, seed %llu, friction %.3f, stiffness x%.2f (%.1f s)\n", out.c_str(), effect.c_str(),

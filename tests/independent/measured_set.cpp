@@ -75,7 +75,12 @@ std::vector<Design> programme(const std::filesystem::path& motions) {
           sine_design(5.0, 6.0), earthquake_design(kobe, motions),     earthquake_design(loma, motions)};
 }
 
-std::string specimen_text(const std::string& half_width) {
+// The [cask] line that states the footprint rule.
+std::string footprint_line(const std::string& footprint) {
+  return footprint == "distributed" ? "footprint = \"distributed\"" : "half_width = \"" + footprint + "\"";
+}
+
+std::string specimen_text(const std::string& footprint) {
   return R"(title = "Shaking-table tests of the 1/3 model cask"
 # Made by caskdem_independent_data (tests/independent): a model written apart from caskdem's.
 # What the experimenter knows, with nominal values; the truth is in truth.json.
@@ -85,7 +90,7 @@ shape = "cylinder"
 diameter = "0.95 m"
 height = "2.033 m"
 density = "8.743 g/cm^3"
-half_width = ")" + half_width + R"("
+)" + footprint_line(footprint) + R"(
 rounding = "0.5 cm"
 
 [contact]
@@ -115,8 +120,8 @@ seed = 1
 
 MeasuredSetResult write_independent_measured_set(const std::filesystem::path& directory, const std::string& effect,
                                                  std::uint64_t seed, const MeasuredSetOptions& options) {
-  if (options.half_width != "gyration" && options.half_width != "radius")
-    throw std::invalid_argument("half width must be 'gyration' or 'radius', not '" + options.half_width + "'");
+  if (options.footprint != "distributed" && options.footprint != "gyration" && options.footprint != "radius")
+    throw std::invalid_argument("footprint must be 'distributed', 'gyration' or 'radius', not '" + options.footprint + "'");
   MeasuredSetResult result;
   result.truth = draw_truth(effect, seed);
   const Truth& truth = result.truth;
@@ -126,7 +131,7 @@ MeasuredSetResult write_independent_measured_set(const std::filesystem::path& di
     for (int i = 1; i <= static_cast<int>(designs.size()); ++i) chosen.push_back(i);
 
   std::filesystem::create_directories(directory);
-  std::ofstream(directory / "specimen.toml") << specimen_text(options.half_width);
+  std::ofstream(directory / "specimen.toml") << specimen_text(options.footprint);
 
   const CylinderModel model(truth.cask);
   const State rest = model.equilibrium();
@@ -193,7 +198,7 @@ MeasuredSetResult write_independent_measured_set(const std::filesystem::path& di
                {"static_settlement_m", c.half_height + c.camber - rest[1]},
                {"mass_kg", c.mass()},
                {"slenderness_rad", c.slenderness()}};
-  j["specimen_half_width"] = options.half_width;
+  j["specimen_footprint"] = options.footprint;
   j["seed"] = seed;
   j["noise"] = {{"rotation_rad", options.rotation_noise}, {"slide_m", options.slide_noise}, {"table_m_s2", options.table_noise}};
   j["tests"] = tests_json;

@@ -20,7 +20,10 @@
 namespace independent {
 
 struct MeasuredSetOptions {
-  std::string half_width = "gyration";  // the footprint rule written in specimen.toml: gyration or radius
+  // The footprint rule specimen.toml states: "distributed" (the cask these data come from: a
+  // circular base on distributed contact), or a two-corner rule, "gyration" or "radius" (an
+  // analyst's guess, deliberately wrong here).
+  std::string footprint = "distributed";
   std::filesystem::path motions;        // folder with three-component/*.AT2 (default: the shared motions)
   std::vector<int> tests;               // 1-based tests to write; empty = all six
   double free_time = 2.5;               // s of recording after the motion
@@ -44,7 +47,7 @@ struct MeasuredSetResult {
 };
 
 // Writes the directory (created). Throws std::invalid_argument on an unknown effect or
-// half-width rule, std::runtime_error on a missing record.
+// footprint rule, std::runtime_error on a missing record.
 MeasuredSetResult write_independent_measured_set(const std::filesystem::path& directory, const std::string& effect,
                                                  std::uint64_t seed, const MeasuredSetOptions& options = {});
 

@@ -196,7 +196,7 @@ TEST(MeasuredSet, SameSeedGivesTheSameBytes) {
   write_independent_measured_set(c, "eccentric_mass", 4, one_test());
   for (const char* f : {"specimen.toml", "test4.csv", "truth.json"}) EXPECT_EQ(slurp(a / f), slurp(b / f)) << f;
   EXPECT_NE(slurp(a / "test4.csv"), slurp(c / "test4.csv"));
-  EXPECT_NE(slurp(a / "specimen.toml").find("half_width = \"gyration\""), std::string::npos);
+  EXPECT_NE(slurp(a / "specimen.toml").find("footprint = \"distributed\""), std::string::npos);
 }
 
 // Largest difference of each column of two CSV files of the same test.
@@ -240,7 +240,7 @@ TEST(Cli, BadArgumentsExitWithTwo) {
   auto run = [&](const std::string& args) { return WEXITSTATUS(std::system((bin + " " + args + " 2>/dev/null").c_str())); };
   EXPECT_EQ(run("--out " + out + " --effect friction --seed 1"), 2);
   EXPECT_EQ(run("--out " + out + " --effect none --seed -1"), 2);
-  EXPECT_EQ(run("--out " + out + " --effect none --seed 1 --half-width wide"), 2);
+  EXPECT_EQ(run("--out " + out + " --effect none --seed 1 --footprint wide"), 2);
   EXPECT_EQ(run("--effect none --seed 1"), 2);
   EXPECT_EQ(run("--out " + out + " --effect none --seed 1 --extra"), 2);
   EXPECT_FALSE(std::filesystem::exists(out));
