@@ -30,7 +30,8 @@ const char* kGeometryCheck =
 
 Adequacy judge_adequacy(const MeasuredSet& set, const std::vector<Parameter>& parameters, const FitResult& fit,
                         const std::vector<double>& nominal, const std::vector<double>& loss,
-                        const std::vector<std::vector<double>>& residuals, const std::vector<int>& compared) {
+                        const std::vector<std::vector<double>>& residuals, const std::vector<int>& compared,
+                        const PointObjective& training_objective) {
   Adequacy a;
   const std::size_t tests = set.tests.size();
   const double test_level = kAdequacyLevel / double(tests);
@@ -53,15 +54,27 @@ Adequacy judge_adequacy(const MeasuredSet& set, const std::vector<Parameter>& pa
     const Parameter& p = parameters[i];
     const double value = fit.best[i];
     auto implausible = [&](const std::string& why) { a.implausible.push_back({p.name, value, nominal[i], why}); };
+    // Far from the stated value, and the data exclude the stated value.
+    auto excluded = [&]() {
+      std::vector<double> stated = fit.best;
+      stated[i] = nominal[i];
+      const double ratio = training_objective(stated) - fit.objective;
+      if (ratio <= kLikelihoodRatioBound) return false;
+      implausible("");
+      a.implausible.back().likelihood_ratio = ratio;
+      return true;
+    };
     if (at_search_bound(p, value)) {
       implausible("on its search bound [" + std::to_string(p.low) + ", " + std::to_string(p.high) +
                   "]: the tests pull it beyond the range searched");
-    } else if (p.name == "stiffness_scale" && (value > kStiffnessFactor || value < 1.0 / kStiffnessFactor)) {
-      implausible("the contact stiffness is more than " + std::to_string(int(kStiffnessFactor)) +
-                  " times off the nominal: the contact's geometry, not its stiffness, is likely wrong");
+    } else if (p.name == "stiffness_scale" && (value > kStiffnessFactor || value < 1.0 / kStiffnessFactor) && excluded()) {
+      a.implausible.back().why = "the contact stiffness is more than " + std::to_string(int(kStiffnessFactor)) +
+                                 " times off the nominal, and the data exclude the nominal: the contact's geometry, "
+                                 "not its stiffness, is likely wrong";
     } else if (p.name == "friction" && nominal[i] > 0.0 &&
-               (value > kFrictionFactor * nominal[i] || value < nominal[i] / kFrictionFactor)) {
-      implausible("far from the stated coefficient (more than a factor 1.5 off)");
+               (value > kFrictionFactor * nominal[i] || value < nominal[i] / kFrictionFactor) && excluded()) {
+      a.implausible.back().why = "far from the stated coefficient (more than a factor 1.5 off), and the data exclude the "
+                                 "stated one";
     }
   }
   for (const ImplausibleValue& v : a.implausible) {

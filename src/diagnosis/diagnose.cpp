@@ -183,10 +183,14 @@ FitOptions fit_options_of(const MeasuredSet& set) {
   return o;
 }
 
-Adequacy adequacy_of(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant, const ModelFit& m) {
+Adequacy adequacy_of(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant, const ModelFit& m,
+                     const DiagnosisOptions& options) {
   std::vector<int> compared;
   for (const TestReference& r : yardstick.references) compared.push_back(static_cast<int>(compared_count(r)));
-  return judge_adequacy(set, m.parameters, m.fit, variant.nominal_baseline(), m.loss, m.residuals, compared);
+  const PointObjective training = [&](const std::vector<double>& x) {
+    return objective_over(set, yardstick, variant, set.training, {x}, options).front();
+  };
+  return judge_adequacy(set, m.parameters, m.fit, variant.nominal_baseline(), m.loss, m.residuals, compared, training);
 }
 
 // Fits a model; its searches start from `starts` (the model it extends, mechanism off) and from
@@ -234,7 +238,7 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
   m.bic = bic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
   m.aic = aic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
   m.heldout_error = error_of(m.loss, yardstick, set.heldout);
-  m.adequacy = adequacy_of(set, yardstick, variant, m);
+  m.adequacy = adequacy_of(set, yardstick, variant, m, options);
   return m;
 }
 
@@ -510,7 +514,7 @@ ModelFit judged_fit(const MeasuredSet& set, const std::vector<Mechanism>& mechan
   m.bic = bic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
   m.aic = aic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
   m.heldout_error = error_of(m.loss, yardstick, set.heldout);
-  m.adequacy = adequacy_of(set, yardstick, variant, m);
+  m.adequacy = adequacy_of(set, yardstick, variant, m, options);
   return m;
 }
 

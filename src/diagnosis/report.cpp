@@ -48,7 +48,11 @@ nlohmann::json adequacy_json(const Adequacy& a) {
   for (const Misfit& m : a.misfits) j["misfits"].push_back({{"test", m.test}, {"measure", m.measure}, {"residual", m.residual}});
   j["implausible"] = nlohmann::json::array();
   for (const ImplausibleValue& v : a.implausible) {
-    j["implausible"].push_back({{"parameter", v.parameter}, {"value", v.value}, {"nominal", v.nominal}, {"why", v.why}});
+    j["implausible"].push_back({{"parameter", v.parameter},
+                                {"value", v.value},
+                                {"nominal", v.nominal},
+                                {"why", v.why},
+                                {"likelihood_ratio", v.likelihood_ratio}});
   }
   j["checks"] = a.checks;
   return j;

@@ -60,13 +60,16 @@ TEST(Adequacy, ResidualsWithinTheirTolerancesFitAndManyBeyondDoNot) {
   const std::vector<Parameter> parameters = ModelVariant(made.set.specimen, {}, true).parameters();
   FitResult fit;
   fit.best = {0.35, 0.03, 1.0};
+  fit.objective = 0.0;
+  // The training objective at any other point: far above the fit's (the data exclude it).
+  const PointObjective excludes_everything = [](const std::vector<double>&) { return 1e6; };
   const std::vector<double> nominal = fit.best;
   const std::size_t tests = made.set.tests.size(), measures = measure_names().size();
   const std::vector<int> compared(tests, static_cast<int>(measures));
   const auto judged = [&](double r) {
     const std::vector<std::vector<double>> residuals(tests, std::vector<double>(measures, r));
     std::vector<double> loss(tests, robust_loss(residuals[0]));
-    return judge_adequacy(made.set, parameters, fit, nominal, loss, residuals, compared);
+    return judge_adequacy(made.set, parameters, fit, nominal, loss, residuals, compared, excludes_everything);
   };
   const Adequacy fits = judged(0.8);
   EXPECT_TRUE(fits.adequate);
@@ -83,11 +86,18 @@ TEST(Adequacy, ResidualsWithinTheirTolerancesFitAndManyBeyondDoNot) {
   fit.best = {0.70, 0.03, 1.0};
   const std::vector<std::vector<double>> small(tests, std::vector<double>(measures, 0.5));
   const Adequacy slippery =
-      judge_adequacy(made.set, parameters, fit, nominal, std::vector<double>(tests, robust_loss(small[0])), small, compared);
+      judge_adequacy(made.set, parameters, fit, nominal, std::vector<double>(tests, robust_loss(small[0])), small, compared,
+                     excludes_everything);
   EXPECT_TRUE(slippery.fits_within_noise);
   EXPECT_FALSE(slippery.adequate);
   ASSERT_EQ(slippery.implausible.size(), 1u);
   EXPECT_EQ(slippery.implausible[0].parameter, "friction");
+  // ... unless the data do not exclude the stated friction (the objective there within the
+  // likelihood-ratio bound of the fit's): a value the tests barely determine is no misfit.
+  const Adequacy undetermined = judge_adequacy(made.set, parameters, fit, nominal,
+                                               std::vector<double>(tests, robust_loss(small[0])), small, compared,
+                                               [](const std::vector<double>&) { return kLikelihoodRatioBound - 1.0; });
+  EXPECT_TRUE(undetermined.adequate);
 }
 
 TEST(Adequacy, TheBaselineOnItsOwnRuleFitsAndOnTheWrongRuleDoesNot) {

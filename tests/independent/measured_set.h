@@ -4,9 +4,9 @@
 // truth.json with what the diagnosis should find.
 //
 // The test programme (1/3 model scale, 200 Hz, each followed by 2.5 s of free response):
-//   test1  sine 3.6 Hz, 10 mm (0.52 g)   test4  sine 4.5 Hz, 10 mm (0.82 g)
-//   test2  sine 4.0 Hz, 10 mm (0.64 g)   test5  Kobe 1995 KJMA 000, time / sqrt(3)
-//   test3  El Centro 1940 180, / sqrt(3) test6  Loma Prieta 1989 Corralitos 000, / sqrt(3)
+//   test1  sine 3.6 Hz, 10 mm (0.52 g)   test4  sine 5.0 Hz, 10 mm (1.01 g)
+//   test2  sine 4.2 Hz, 10 mm (0.71 g)   test5  Kobe 1995 KJMA 000, time / sqrt(3), 0.65 g
+//   test3  El Centro 1940 180, / sqrt(3), 0.70 g   test6  Loma Prieta 1989 Corralitos 000, / sqrt(3), 0.70 g
 // Uplift needs g tan(alpha) = 0.47 g, so the sines are above 3.4 Hz at 10 mm. The held-out
 // tests of the [diagnosis] table (test2, test5) each have training tests of their kind.
 
