@@ -174,3 +174,34 @@ TEST_F(CaseErrors, MissingRequiredKey) {
 
 }  // namespace
 }  // namespace caskdem
+
+namespace caskdem {
+namespace {
+
+// A distributed footprint pivots on the rim and needs a number of contacts it can hold: the
+// two-corner gyration rule beside it, too few or too many points, or points on a two-corner
+// footprint are each one error naming the key.
+class FootprintErrors : public testing::TemporaryFiles {
+ protected:
+  std::filesystem::path variant(const std::string& name, const std::string& replace) const {
+    return variant_of(testing::case_path("model-1-3-sine.toml"), name + ".toml",
+                      "half_width = \"gyration\"      # the paper's 2D half-width: r/2 (docs/model.md, \"Cask section\")",
+                      replace);
+  }
+};
+
+TEST_F(FootprintErrors, EachIsNamed) {
+  EXPECT_NO_THROW((void)load_case(variant("distributed", "footprint = \"distributed\"")));
+  EXPECT_NO_THROW((void)load_case(variant("radius", "footprint = \"distributed\"\nhalf_width = \"radius\"")));
+  EXPECT_THAT(error_of(variant("gyration", "footprint = \"distributed\"\nhalf_width = \"gyration\"")),
+              HasSubstr("cask.half_width"));
+  EXPECT_THAT(error_of(variant("two", "footprint = \"distributed\"\nfootprint_points = 2")),
+              HasSubstr("cask.footprint_points"));
+  EXPECT_THAT(error_of(variant("many", "footprint = \"distributed\"\nfootprint_points = 17")),
+              HasSubstr("3 to 16"));
+  EXPECT_THAT(error_of(variant("corners", "footprint_points = 9")), HasSubstr("only a distributed footprint"));
+  EXPECT_THAT(error_of(variant("unknown", "footprint = \"ring\"")), HasSubstr("cask.footprint"));
+}
+
+}  // namespace
+}  // namespace caskdem
