@@ -193,6 +193,21 @@ Adequacy adequacy_of(const MeasuredSet& set, const Yardstick& yardstick, const M
   return judge_adequacy(set, m.parameters, m.fit, variant.nominal_baseline(), m.loss, m.residuals, compared, training);
 }
 
+// A fit's judgement at its point (m.fit.best, m.fit.objective and m.heldout_standard_error
+// set): every test's loss and residuals, the information criteria, the held-out error and the
+// adequacy.
+void judge_fit(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant, ModelFit& m,
+               const DiagnosisOptions& options) {
+  Judged judged = judge_at(set, yardstick, variant, m.fit.best, m.heldout_standard_error, options);
+  m.loss = std::move(judged.loss);
+  m.residuals = std::move(judged.residuals);
+  m.heldout_tolerance = std::move(judged.heldout_tolerance);
+  m.bic = bic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
+  m.aic = aic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
+  m.heldout_error = error_of(m.loss, yardstick, set.heldout);
+  m.adequacy = adequacy_of(set, yardstick, variant, m, options);
+}
+
 // Fits a model; its searches start from `starts` (the model it extends, mechanism off) and from
 // the specimen's nominal values (mechanism off).
 ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant,
@@ -231,14 +246,7 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
 
   // The curvature's errors, before any jackknife raises them: what the held-out tests are judged with.
   m.heldout_standard_error = m.fit.standard_error;
-  Judged judged = judge_at(set, yardstick, variant, m.fit.best, m.heldout_standard_error, options);
-  m.loss = std::move(judged.loss);
-  m.residuals = std::move(judged.residuals);
-  m.heldout_tolerance = std::move(judged.heldout_tolerance);
-  m.bic = bic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
-  m.aic = aic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
-  m.heldout_error = error_of(m.loss, yardstick, set.heldout);
-  m.adequacy = adequacy_of(set, yardstick, variant, m, options);
+  judge_fit(set, yardstick, variant, m, options);
   return m;
 }
 
@@ -506,15 +514,8 @@ ModelFit judged_fit(const MeasuredSet& set, const std::vector<Mechanism>& mechan
   m.fit.standard_error = heldout_standard_error;
   m.heldout_standard_error = heldout_standard_error;
   m.training_residual_count = residual_count(yardstick, set.training);
-  Judged judged = judge_at(set, yardstick, variant, point, heldout_standard_error, options);
-  for (int t : set.training) m.fit.objective += judged.loss[t];
-  m.loss = std::move(judged.loss);
-  m.residuals = std::move(judged.residuals);
-  m.heldout_tolerance = std::move(judged.heldout_tolerance);
-  m.bic = bic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
-  m.aic = aic_of(m.fit.objective, m.training_residual_count, m.parameters.size());
-  m.heldout_error = error_of(m.loss, yardstick, set.heldout);
-  m.adequacy = adequacy_of(set, yardstick, variant, m, options);
+  m.fit.objective = objective_over(set, yardstick, variant, set.training, {point}, options).front();
+  judge_fit(set, yardstick, variant, m, options);
   return m;
 }
 
