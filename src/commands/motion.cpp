@@ -46,18 +46,23 @@ void add_motion(CLI::App& app) {
     }
     if (time_step->count() > 0) read.time_step = options->time_step;
     motion::Record record = motion::read_record(options->file, read);
-    if (scale->count() > 0) record = motion::scaled(record, options->scale);
-    try {
-      if (pga->count() > 0) record = motion::scaled_to_pga(record, units::gal_to_si(options->target_pga_gal));
-      if (pgv->count() > 0) record = motion::scaled_to_pgv(record, options->target_pgv_cm_s * units::kine);
-    } catch (const std::invalid_argument& e) {  // a record without motion has no factor to a target
-      throw InputError(options->file + ": " + e.what() + " (asked for by " +
-                       (pga->count() > 0 ? "--target-pga" : "--target-pgv") + ")");
-    }
-    if (options->similarity != 1.0) record = motion::time_scaled(record, 1.0 / std::sqrt(options->similarity));
+    // A scaling refuses what no ground motion can be (a record without motion has no factor to
+    // a target; no factor may take the PGA past the bound, nor the time step out of range).
+    const auto scale_by = [&](const char* option, auto&& apply) {
+      try {
+        record = apply();
+      } catch (const std::invalid_argument& e) {
+        throw InputError(options->file + ": " + e.what() + " (asked for by " + option + ")");
+      }
+    };
+    if (scale->count() > 0) scale_by("--scale", [&] { return motion::scaled(record, options->scale); });
+    if (pga->count() > 0)
+      scale_by("--target-pga", [&] { return motion::scaled_to_pga(record, units::gal_to_si(options->target_pga_gal)); });
+    if (pgv->count() > 0)
+      scale_by("--target-pgv", [&] { return motion::scaled_to_pgv(record, options->target_pgv_cm_s * units::kine); });
+    if (options->similarity != 1.0)
+      scale_by("--similarity", [&] { return motion::time_scaled(record, 1.0 / std::sqrt(options->similarity)); });
     const double pga = motion::peak_ground_acceleration(record);
-    if (!std::isfinite(pga))
-      throw InputError("--scale " + number_text(options->scale) + ": the scaled accelerations overflow; expected a smaller factor");
     const double pgv = motion::peak_ground_velocity(record);
     std::cout << std::setprecision(5);
     std::cout << "record     " << record.source << "\n";

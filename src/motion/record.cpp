@@ -14,6 +14,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/text.h"
 #include "motion/record.h"
 
 namespace caskdem::motion {
@@ -51,32 +52,53 @@ double peak_ground_velocity(const Record& record) {
   return peak;
 }
 
+double largest_scale_factor(const Record& record) {
+  return kLargestGroundAcceleration / peak_ground_acceleration(record);
+}
+
 Record scaled(const Record& record, double factor) {
   if (!std::isfinite(factor)) throw std::invalid_argument("scaled: the factor must be finite");
+  const double largest = largest_scale_factor(record);
+  if (!(std::abs(factor) <= largest))
+    throw std::invalid_argument("a scale factor of " + number_text(factor) + " would take the record's PGA of " +
+                                number_text(peak_ground_acceleration(record)) + " m/s^2 above " +
+                                std::string(kLargestGroundAccelerationText) +
+                                ", more than any ground motion; expected a factor of at most " + number_text(largest) +
+                                " in magnitude");
   Record out = record;
   for (double& a : out.acceleration) a *= factor;
   return out;
 }
 
 namespace {
-// The factor that brings a measure (PGA or PGV) to its target; a zero record has no such factor.
-double factor_for(double measure, double target, const char* measure_name) {
+// The factor that brings a measure (PGA or PGV) to its target; a zero record, or one so near
+// zero that the factor overflows, has no such factor.
+double factor_for(double measure, double target, const char* measure_name, const char* unit) {
   if (!std::isfinite(target) || target < 0.0)
     throw std::invalid_argument(std::string("the target ") + measure_name + " must be finite and not negative");
   if (!(measure > 0.0))
     throw std::invalid_argument(std::string("the record's accelerations are all zero, so no scale factor brings its ") +
                                 measure_name + " to the target; expected a record with motion");
-  return target / measure;
+  const double factor = target / measure;
+  if (!std::isfinite(factor))
+    throw std::invalid_argument(std::string("the record's ") + measure_name + " of " + number_text(measure) + " " +
+                                unit + " is too small for any finite factor to bring it to the target of " +
+                                number_text(target) + " " + unit + "; expected a record with motion");
+  return factor;
 }
 }  // namespace
 
 Record scaled_to_pga(const Record& record, double target_pga) {
-  return scaled(record, factor_for(peak_ground_acceleration(record), target_pga, "PGA"));
+  if (target_pga > kLargestGroundAcceleration)
+    throw std::invalid_argument("the target PGA of " + number_text(target_pga) + " m/s^2 is above " +
+                                std::string(kLargestGroundAccelerationText) +
+                                ", more than any ground motion; expected a smaller target");
+  return scaled(record, factor_for(peak_ground_acceleration(record), target_pga, "PGA", "m/s^2"));
 }
 
 Record scaled_to_pgv(const Record& record, double target_pgv) {
   // PGV is linear in the accelerations (integration and baseline correction are linear).
-  return scaled(record, factor_for(peak_ground_velocity(record), target_pgv, "PGV"));
+  return scaled(record, factor_for(peak_ground_velocity(record), target_pgv, "PGV", "m/s"));
 }
 
 Record time_scaled(const Record& record, double time_factor) {
@@ -84,6 +106,11 @@ Record time_scaled(const Record& record, double time_factor) {
     throw std::invalid_argument("time_scaled: the time factor must be finite and positive");
   Record out = record;
   out.time_step *= time_factor;
+  if (!(out.time_step > 0.0 && std::isfinite(out.time_step) && std::isfinite(out.duration())))
+    throw std::invalid_argument("a time factor of " + number_text(time_factor) + " on the record's time step of " +
+                                number_text(record.time_step) +
+                                " s leaves no positive, finite time step and duration; expected a similarity scale "
+                                "nearer 1");
   return out;
 }
 

@@ -11,14 +11,24 @@
 //                         "#" comment lines, free-text header lines before the data, a
 //                         UTF-8 byte-order mark and CRLF line ends are all accepted; units
 //                         g, gal or m/s^2 must be stated (ReadOptions::unit)
-// Every problem is an InputError naming the file and the line and what was expected.
+// Every problem is an InputError naming the file and the line and what was expected; a sample
+// above kLargestGroundAcceleration in magnitude (below) is one.
 
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace caskdem::motion {
+
+// The largest acceleration magnitude of any recorded or synthetic ground motion, or of a
+// shaking table, m/s^2 (about 100 g; strong earthquakes and tables stay within a few g). A
+// larger value is in another unit or corrupt: every record reader refuses such a sample (in
+// SI, after its unit is applied), scaling refuses to make one, and the case file bounds table
+// accelerations by it. Keeping records within it keeps every derived quantity finite.
+inline constexpr double kLargestGroundAcceleration = 1000.0;
+inline constexpr std::string_view kLargestGroundAccelerationText = "1000 m/s^2 (about 100 g)";
 
 // A uniformly sampled acceleration record in SI: sample k is at t = k * time_step.
 struct Record {
@@ -69,14 +79,22 @@ GroundMotion integrate_record(const Record& record);
 double peak_ground_acceleration(const Record& record);  // max |a|, m/s^2
 double peak_ground_velocity(const Record& record);      // max |v| of integrate_record, m/s
 
+// kLargestGroundAcceleration / PGA: the largest factor (in magnitude) scaled accepts for
+// this record; infinity for a record of zeros.
+double largest_scale_factor(const Record& record);
+
 // Scaling throws std::invalid_argument for a non-finite factor, a negative or non-finite
-// target, or a record whose PGA (PGV) is zero.
+// target, a record whose PGA (PGV) is zero or so small that the factor to the target is not
+// finite, a PGA target above kLargestGroundAcceleration, and any factor larger in magnitude
+// than largest_scale_factor (the scaled PGA would pass the bound). A scaled record is
+// therefore always finite.
 Record scaled(const Record& record, double factor);
 Record scaled_to_pga(const Record& record, double target_pga);
 Record scaled_to_pgv(const Record& record, double target_pgv);
 // Multiplies the time step by time_factor (the similarity law compresses a prototype
 // motion's time by 1/sqrt(N) for an N-times smaller model; accelerations are unchanged).
-// Throws std::invalid_argument unless time_factor is finite and positive.
+// Throws std::invalid_argument unless time_factor is finite and positive and the scaled
+// time step is positive and finite with a finite duration.
 Record time_scaled(const Record& record, double time_factor);
 
 }  // namespace caskdem::motion

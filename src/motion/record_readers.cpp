@@ -14,7 +14,8 @@
 //               started, a non-numeric line or one with another number of values is an error.
 //               The unit must be given (the file does not say it). A time column must be
 //               uniformly sampled; its first time is taken as t = 0 of the record.
-// Every error is an InputError "FILE:LINE: what was found; expected what".
+// Every error is an InputError "FILE:LINE: what was found; expected what". Every sample goes
+// through one check (sample_in_si): finite, and at most kLargestGroundAcceleration in SI.
 
 #include <algorithm>
 #include <array>
@@ -115,6 +116,20 @@ std::string unit_name(AccelerationUnit unit) {
   return "?";
 }
 
+// A sample as written (token) in the file's unit, into SI; the one check of every reader: a
+// value that is not finite, or that no ground motion can have, is an error naming the line.
+double sample_in_si(const path& file, long line, std::string_view token, double value, AccelerationUnit unit) {
+  const std::string found = "found '" + std::string(trim(token)) + "'";
+  if (!std::isfinite(value)) fail_at(file, line, found + "; expected finite accelerations");
+  const double si = to_si(value, unit);
+  if (!(std::abs(si) <= kLargestGroundAcceleration))
+    fail_at(file, line,
+            found + " " + unit_name(unit) + "; expected accelerations of at most " +
+                std::string(kLargestGroundAccelerationText) +
+                " in magnitude, as no recorded or synthetic ground motion is larger (is the unit right?)");
+  return si;
+}
+
 // A time step given in the options must agree with the one the file states.
 void check_given_step(const path& file, long line, double file_step, const ReadOptions& options) {
   if (!options.time_step) return;
@@ -199,11 +214,10 @@ Record read_at2(const path& file, const std::vector<std::string>& lines, std::si
       const auto value = parse_number(token);
       if (!value)
         fail_at(file, line_number, "found '" + std::string(token) + "'; expected numbers (accelerations in g)");
-      if (!std::isfinite(*value))
-        fail_at(file, line_number, "found '" + std::string(token) + "'; expected finite accelerations");
+      const double a = sample_in_si(file, line_number, token, *value, AccelerationUnit::g);
       if (static_cast<long long>(record.acceleration.size()) == header.npts)
         fail_at(file, line_number, "more values than NPTS (line " + std::to_string(npts_line) + "); " + expected_count);
-      record.acceleration.push_back(units::g_to_si(*value));
+      record.acceleration.push_back(a);
     }
   }
   if (static_cast<long long>(record.acceleration.size()) != header.npts)
@@ -243,7 +257,7 @@ std::vector<std::string_view> split_fields(std::string_view line) {
 struct Sample {
   long line;
   double t;  // only with two columns
-  double a;
+  double a;  // m/s^2
 };
 
 Record read_columns(const path& file, const std::vector<std::string>& lines, const ReadOptions& options) {
@@ -289,9 +303,10 @@ Record read_columns(const path& file, const std::vector<std::string>& lines, con
       fail_at(file, line_number,
               "found " + std::to_string(values.size()) + " values; expected " + layout + " as on line " +
                   std::to_string(first_data_line));
-    for (const double v : values)
-      if (!std::isfinite(v)) fail_at(file, line_number, "found " + quote_line(line) + "; expected finite numbers");
-    samples.push_back({line_number, values.front(), values.back()});
+    if (!std::isfinite(values.front()))
+      fail_at(file, line_number, "found " + quote_line(line) + "; expected finite numbers");
+    samples.push_back(
+        {line_number, values.front(), sample_in_si(file, line_number, fields.back(), values.back(), *options.unit)});
   }
   if (samples.empty())
     fail_at(file, 0, "no data lines; expected lines of numbers 't, a' or 'a' after any header");
@@ -336,7 +351,7 @@ Record read_columns(const path& file, const std::vector<std::string>& lines, con
     }
   }
   record.acceleration.reserve(samples.size());
-  for (const Sample& s : samples) record.acceleration.push_back(to_si(s.a, *options.unit));
+  for (const Sample& s : samples) record.acceleration.push_back(s.a);
   return record;
 }
 

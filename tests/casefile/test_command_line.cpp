@@ -49,6 +49,31 @@ TEST_F(CommandLine, AZeroRecordCannotBeScaledToATarget) {
   }
 }
 
+// A record sample no earthquake can produce (mutation fuzzing found 5.4e305 g accepted and
+// printed as "inf gal") is refused with the file, the line and the value; so is a scaling
+// beyond the largest acceleration. Nothing prints inf or nan.
+TEST_F(CommandLine, AnImpossibleRecordValueOrScalingIsRefused) {
+  const auto huge = write("huge.csv", "t,a\n0.00,0.01\n0.01,5.4e305\n0.02,0.02\n");
+  const Outcome o = run_caskdem("motion " + huge.string() + " --unit g");
+  EXPECT_EQ(o.status, 2) << o.output;
+  EXPECT_THAT(o.output, HasSubstr(huge.string() + ":3: found '5.4e305'"));
+  EXPECT_THAT(o.output, HasSubstr("expected accelerations of at most 1000 m/s^2 (about 100 g)"));
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << "one message: " << o.output;
+
+  const auto record = write("one-g.csv", "t,a\n0.00,0\n0.01,1\n0.02,-1\n0.03,0\n");
+  const auto still = write("almost-still.csv", "t,a\n0.00,0\n0.01,5e-324\n0.02,0\n");
+  for (const std::string& arguments : {"motion " + record.string() + " --unit g --scale 200",
+                                       "motion " + record.string() + " --unit g --target-pga 2e5",
+                                       "motion " + record.string() + " --unit g --target-pgv 1e9",
+                                       "motion " + still.string() + " --unit m/s^2 --target-pga 100"}) {
+    const Outcome scaled = run_caskdem(arguments);
+    EXPECT_EQ(scaled.status, 2) << arguments << "\n" << scaled.output;
+    EXPECT_THAT(scaled.output, ::testing::Not(HasSubstr("inf"))) << arguments;
+    EXPECT_THAT(scaled.output, ::testing::Not(HasSubstr("nan"))) << arguments;
+    EXPECT_EQ(std::count(scaled.output.begin(), scaled.output.end(), '\n'), 1) << arguments << "\n" << scaled.output;
+  }
+}
+
 // Values in the wrong unit that passed every key's own check: a density a thousand orders of
 // magnitude off ran one step of 6e144 s and reported "completed"; a pulse of 1e308 g stopped
 // with a library message naming neither file nor key.

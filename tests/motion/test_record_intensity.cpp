@@ -151,6 +151,39 @@ TEST(Scaling, ZeroRecordsAndBadTargetsAreRejected) {
   EXPECT_THROW(scaled(record, INFINITY), std::invalid_argument);
 }
 
+// Scaling never makes a record no ground motion can be: the largest allowed factor brings
+// the PGA to the bound (1000 m/s^2, as the readers use), a larger one is refused, and so are
+// targets whose factor would overflow or break the bound. Nothing comes back non-finite.
+TEST(Scaling, ByTheLargestAllowedFactor) {
+  const Record record = elcentro();
+  const double largest = 1000.0 / peak_ground_acceleration(record);
+  for (const double factor : {largest, -largest}) {
+    const Record top = scaled(record, factor);
+    EXPECT_NEAR(peak_ground_acceleration(top), 1000.0, 1e-12);
+    EXPECT_TRUE(std::isfinite(peak_ground_velocity(top)));
+  }
+  EXPECT_THROW(scaled(record, 1.000001 * largest), std::invalid_argument);
+  EXPECT_THROW(scaled(record, 1e306), std::invalid_argument);
+  EXPECT_NO_THROW(scaled_to_pga(record, 1000.0));
+  EXPECT_THROW(scaled_to_pga(record, 1000.001), std::invalid_argument);
+  EXPECT_THROW(scaled_to_pgv(record, 1e3), std::invalid_argument);
+
+  // A record of (almost) no motion: its factor to a target would overflow.
+  const Record tiny{"tiny", 0.01, {0.0, 5e-324, -5e-324, 0.0}};
+  EXPECT_THROW(scaled_to_pga(tiny, 1.0), std::invalid_argument);
+  EXPECT_THROW(scaled_to_pgv(tiny, 1.0), std::invalid_argument);
+  // A constant acceleration has (to rounding) no baseline-corrected velocity.
+  const Record constant{"constant", 0.01, std::vector<double>(1000, 1.0)};
+  EXPECT_THROW(scaled_to_pgv(constant, 0.5), std::invalid_argument);
+}
+
+TEST(Scaling, TimeScalingNeverGivesANonFiniteOrZeroStep) {
+  const Record slow{"slow", 1e300, {0.0, 1.0, 0.0}};
+  EXPECT_THROW(time_scaled(slow, 1e10), std::invalid_argument);
+  const Record fast{"fast", 1e-300, {0.0, 1.0, 0.0}};
+  EXPECT_THROW(time_scaled(fast, 1e-30), std::invalid_argument);
+}
+
 TEST(Scaling, TimeScalingKeepsAccelerationAndScalesVelocity) {
   // Similarity law for a 4-times smaller model: time by 1/sqrt(4). a is unchanged, and
   // v = integral of a dt scales with the time factor.

@@ -225,6 +225,42 @@ TEST_F(MotionFiles, NanValueInAt2) {
   EXPECT_THAT(error_of(file, {}), AllOf(HasSubstr("nan.AT2:5:"), HasSubstr("NaN"), HasSubstr("expected finite")));
 }
 
+// A sample no ground motion can have (a value in another unit, or a corrupt field) is refused
+// where it is read, before a unit conversion or a scaling overflows: the file, the line, the
+// value as written and the bound are named. Each reader has its own case.
+TEST_F(MotionFiles, At2NgaWest2SampleBeyondTheLargestAcceleration) {
+  const auto file = write("huge.AT2", at2_header + "NPTS=     3, DT=   .0100 SEC\n  .1E-01  .2E-01\n  .5400000E+306\n");
+  EXPECT_THAT(error_of(file, {}), AllOf(HasSubstr("huge.AT2:6:"), HasSubstr("'.5400000E+306'"),
+                                        HasSubstr("expected accelerations of at most 1000 m/s^2 (about 100 g)")));
+}
+
+TEST_F(MotionFiles, At2OldFormSampleBeyondTheLargestAcceleration) {
+  // 102 g is 1000.3 m/s^2: just above the bound, and in the old D-exponent notation.
+  const auto file = write("huge_old.AT2", "PEER\nTest\nACCELERATION IN G\n   3    0.02000    NPTS, DT\n .1D+00 -.102D+03\n .3\n");
+  EXPECT_THAT(error_of(file, {}), AllOf(HasSubstr("huge_old.AT2:5:"), HasSubstr("'-.102D+03'"),
+                                        HasSubstr("expected accelerations of at most 1000 m/s^2")));
+}
+
+TEST_F(MotionFiles, ColumnSampleBeyondTheLargestAcceleration) {
+  const auto two = write("huge.csv", "t,a\n0.00,0.1\n0.01,5.4e305\n0.02,0.3\n");
+  EXPECT_THAT(error_of(two, in_g()), AllOf(HasSubstr("huge.csv:3:"), HasSubstr("'5.4e305'"),
+                                           HasSubstr("expected accelerations of at most 1000 m/s^2 (about 100 g)")));
+
+  ReadOptions gal;
+  gal.unit = AccelerationUnit::gal;
+  gal.time_step = 0.01;
+  const auto one = write("huge_gal.txt", "Accelerations in gal\n10\n-100001\n30\n");
+  EXPECT_THAT(error_of(one, gal), AllOf(HasSubstr("huge_gal.txt:3:"), HasSubstr("'-100001'"),
+                                        HasSubstr("expected accelerations of at most 1000 m/s^2")));
+
+  // The bound itself is a ground motion.
+  ReadOptions si;
+  si.unit = AccelerationUnit::si;
+  const auto edge = write("edge.csv", "0,1000\n0.01,-1000\n");
+  const Record record = read_record(edge, si);
+  EXPECT_EQ(peak_ground_acceleration(record), 1000.0);
+}
+
 TEST_F(MotionFiles, EmptyFile) {
   const auto empty = write("empty.csv", "");
   EXPECT_THAT(error_of(empty, in_g()), AllOf(HasSubstr("empty.csv"), HasSubstr("empty"), HasSubstr("expected")));
