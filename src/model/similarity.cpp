@@ -3,11 +3,18 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "core/text.h"
+
 namespace caskdem {
 
 double similarity_ratio(double scale_n, DimensionExponents d) {
   if (!(scale_n > 0.0)) throw std::invalid_argument("the similarity scale N must be positive");
-  return std::pow(scale_n, -(2.0 * d.mass + d.length + 0.5 * d.time));
+  const double exponent = -(2.0 * d.mass + d.length + 0.5 * d.time);
+  const double ratio = std::pow(scale_n, exponent);
+  if (!(std::isfinite(ratio) && ratio > 0.0))
+    throw std::invalid_argument("the similarity scale N = " + number_text(scale_n) + " makes the ratio N^" +
+                                number_text(exponent) + " overflow or vanish; expected N nearer 1");
+  return ratio;
 }
 
 const std::vector<SimilarityRow>& similarity_table() {

@@ -24,7 +24,8 @@ struct DimensionExponents {
   double time = 0.0;
 };
 
-// model / prototype ratio of a quantity with these dimensions, for a 1/N model.
+// model / prototype ratio of a quantity with these dimensions, for a 1/N model. Throws
+// std::invalid_argument unless N is positive and the ratio is finite and non-zero.
 double similarity_ratio(double scale_n, DimensionExponents dimensions);
 
 struct SimilarityRow {

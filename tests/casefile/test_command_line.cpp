@@ -51,7 +51,8 @@ TEST_F(CommandLine, AZeroRecordCannotBeScaledToATarget) {
 
 // A record sample no earthquake can produce (mutation fuzzing found 5.4e305 g accepted and
 // printed as "inf gal") is refused with the file, the line and the value; so is a scaling
-// beyond the largest acceleration. Nothing prints inf or nan.
+// beyond the largest acceleration, and a similarity scale whose ratios overflow. Nothing
+// prints inf or nan.
 TEST_F(CommandLine, AnImpossibleRecordValueOrScalingIsRefused) {
   const auto huge = write("huge.csv", "t,a\n0.00,0.01\n0.01,5.4e305\n0.02,0.02\n");
   const Outcome o = run_caskdem("motion " + huge.string() + " --unit g");
@@ -65,7 +66,8 @@ TEST_F(CommandLine, AnImpossibleRecordValueOrScalingIsRefused) {
   for (const std::string& arguments : {"motion " + record.string() + " --unit g --scale 200",
                                        "motion " + record.string() + " --unit g --target-pga 2e5",
                                        "motion " + record.string() + " --unit g --target-pgv 1e9",
-                                       "motion " + still.string() + " --unit m/s^2 --target-pga 100"}) {
+                                       "motion " + still.string() + " --unit m/s^2 --target-pga 100",
+                                       std::string("similarity 1e-300")}) {
     const Outcome scaled = run_caskdem(arguments);
     EXPECT_EQ(scaled.status, 2) << arguments << "\n" << scaled.output;
     EXPECT_THAT(scaled.output, ::testing::Not(HasSubstr("inf"))) << arguments;
