@@ -185,9 +185,8 @@ void read_damping(TableReader& root, Case& c) {
 // Longer than a day is a value in the wrong unit: no test or earthquake lasts that long, and the
 // steps of such a run would overflow their count.
 constexpr double kLongestDuration = 1e5;  // s
-// A table acceleration above this (m/s^2, about 100 g) is a value in the wrong unit: shaking
-// tables and earthquakes stay within a few g.
-constexpr double kLargestTableAcceleration = 1000.0;
+// A table acceleration above motion::kLargestGroundAcceleration (1000 m/s^2, about 100 g) is a
+// value in the wrong unit: shaking tables and earthquakes stay within a few g.
 // A synthetic record's sampling: at least 1e-5 s, and from ten samples to 1e8 (800 MB).
 constexpr double kSmallestRecordStep = 1e-5;  // s
 constexpr double kFewestRecordSamples = 10.0;
@@ -235,9 +234,9 @@ MotionSpec read_motion(TableReader& t) {
     m.ramp_cycles = t.non_negative("ramp_cycles", t.quantity_or("ramp_cycles", Dimension::dimensionless, 2.0));
     if (2.0 * m.ramp_cycles > m.cycles) t.fail("ramp_cycles", "the ramps up and down must fit in the cycles");
     const double peak_acceleration = m.amplitude * std::pow(2.0 * std::numbers::pi * m.frequency, 2);
-    if (!(peak_acceleration <= kLargestTableAcceleration))
+    if (!(peak_acceleration <= motion::kLargestGroundAcceleration))
       t.fail("frequency", "expected a sine whose peak acceleration A (2 pi f)^2 is at most " +
-                              number_text(kLargestTableAcceleration) + " m/s^2 (about 100 g), got " +
+                              number_text(motion::kLargestGroundAcceleration) + " m/s^2 (about 100 g), got " +
                               number_text(peak_acceleration) + " m/s^2");
     if (m.cycles / m.frequency > kLongestDuration)
       t.fail("cycles", "expected at most " + number_text(kLongestDuration) + " s of shaking (cycles / frequency), got " +
@@ -247,8 +246,8 @@ MotionSpec read_motion(TableReader& t) {
     const std::string shape = t.choice("shape", {"half_sine", "one_sine", "rectangular"});
     m.shape = *motion::parse_pulse_shape(shape);
     m.pulse_amplitude = t.quantity("amplitude", Dimension::acceleration);
-    if (m.pulse_amplitude == 0.0 || !(std::abs(m.pulse_amplitude) <= kLargestTableAcceleration))
-      t.fail("amplitude", "expected a non-zero acceleration of at most " + number_text(kLargestTableAcceleration) +
+    if (m.pulse_amplitude == 0.0 || !(std::abs(m.pulse_amplitude) <= motion::kLargestGroundAcceleration))
+      t.fail("amplitude", "expected a non-zero acceleration of at most " + number_text(motion::kLargestGroundAcceleration) +
                               " m/s^2 (about 100 g)");
     m.pulse_duration = positive_duration(t, "duration", t.quantity("duration", Dimension::time));
   } else if (kind == "synthetic") {
@@ -271,6 +270,9 @@ MotionSpec read_motion(TableReader& t) {
     s.strong_duration = t.non_negative("strong_duration", t.quantity_or("strong_duration", Dimension::time, s.strong_duration));
     s.decay = t.positive("decay", t.quantity_or("decay", Dimension::frequency, s.decay));
     s.pga = t.positive("pga", t.quantity_or("pga", Dimension::acceleration, s.pga));
+    if (!(s.pga <= motion::kLargestGroundAcceleration))
+      t.fail("pga", "expected a PGA of at most " + std::string(motion::kLargestGroundAccelerationText) + ", got " +
+                        number_text(s.pga) + " m/s^2");
     if (!(s.high_pass_frequency < s.dominant_frequency)) t.fail("high_pass_frequency", "expected a frequency below dominant_frequency");
   } else {
     m.kind = MotionSpec::Kind::record;
@@ -316,19 +318,20 @@ std::unique_ptr<motion::TableMotion> make_motion(const MotionSpec& spec) {
     case MotionSpec::Kind::record: {
       motion::Record record = spec.kind == MotionSpec::Kind::synthetic ? motion::synthetic_record(spec.synthetic)
                                                                          : motion::read_record(spec.file, spec.read);
+      const char* key = spec.scaling == MotionSpec::Scaling::target_pga   ? "target_pga"
+                        : spec.scaling == MotionSpec::Scaling::target_pgv ? "target_pgv"
+                                                                          : "scale";
       try {
         if (spec.scaling == MotionSpec::Scaling::target_pga) record = motion::scaled_to_pga(record, spec.scale);
         else if (spec.scaling == MotionSpec::Scaling::target_pgv) record = motion::scaled_to_pgv(record, spec.scale);
         else record = motion::scaled(record, spec.scale);
+        // PGV targets refer to the prototype motion; the time compression follows.
+        key = "similarity_scale";
+        if (spec.similarity_scale != 1.0) record = motion::time_scaled(record, time_factor);
       } catch (const std::invalid_argument& e) {
-        const char* key = spec.scaling == MotionSpec::Scaling::target_pga   ? "target_pga"
-                          : spec.scaling == MotionSpec::Scaling::target_pgv ? "target_pgv"
-                                                                            : "scale";
         throw InputError(located(spec.file, 0, std::string(e.what()) + " (asked for by " + key +
                                                     (spec.where.empty() ? "" : " of the motion at " + spec.where) + ")"));
       }
-      // PGV targets refer to the prototype motion; the time compression follows.
-      if (spec.similarity_scale != 1.0) record = motion::time_scaled(record, time_factor);
       return motion::make_record_motion(std::move(record));
     }
   }

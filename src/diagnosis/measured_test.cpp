@@ -41,6 +41,7 @@
 
 #include "core/error.h"
 #include "core/text.h"
+#include "motion/record.h"
 
 namespace caskdem::diagnosis {
 namespace {
@@ -77,8 +78,8 @@ constexpr double kInfinity = std::numeric_limits<double>::infinity();
 
 constexpr std::array<ChannelSpec, kChannelCount> kChannels{{
     {"t", "s", true, kInfinity, ""},
-    {"table_acc", "m/s^2", true, 1e3, "1000 m/s^2 (about 100 g)"},
-    {"table_acc_v", "m/s^2", false, 1e3, "1000 m/s^2 (about 100 g)"},
+    {"table_acc", "m/s^2", true, motion::kLargestGroundAcceleration, motion::kLargestGroundAccelerationText},
+    {"table_acc_v", "m/s^2", false, motion::kLargestGroundAcceleration, motion::kLargestGroundAccelerationText},
     {"theta", "rad", true, 2.0 * 3.141592653589793, "2 pi rad (a whole turn)"},
     {"slide", "m", true, 100.0, "100 m"},
     {"theta_dot", "rad/s", false, 1e3, "1000 rad/s"},
