@@ -20,6 +20,10 @@
 # caskdem's own model. The search for a second effect is skipped (it does not change the
 # cause); SECOND_EFFECT= (empty) runs it.
 #
+# KEEP=DIR copies each set's diagnosis.json and truth.json to DIR/EFFECT-SEED-*.json, so that
+# decision rules (thresholds, the held-out tolerance rule) can be compared on the same fits
+# afterwards (bench/decision_rules.py) without diagnosing again.
+#
 # The seeds here start at 1001 so they are not the ones the CI tests use (101..110). About
 # 1 to 5 minutes per data set on 2 cores. Appends to OUT_CSV, so a stopped run resumes.
 set -eu
@@ -56,6 +60,11 @@ fields = [effect, seed, d["cause"], d["second_cause"] or "",
           str(d["baseline"]["adequacy"]["adequate"]).lower(), "%.3g" % d["baseline"]["adequacy"]["goodness_of_fit"]["p_value"]]
 print(",".join(fields))
 PY
+  if [ -n "${KEEP:-}" ]; then
+    mkdir -p "$KEEP"
+    cp "$dir/diagnosis/diagnosis.json" "$KEEP/$effect-$seed-diagnosis.json"
+    [ ! -f "$dir/truth.json" ] || cp "$dir/truth.json" "$KEEP/$effect-$seed-truth.json"
+  fi
   /usr/bin/python3 "$(dirname "$0")/parameter_rows.py" "$dir/diagnosis/diagnosis.json" "$dir/truth.json" "$effect" "$seed" >>"$parameters_out"
   tail -n 1 "$out"
 }

@@ -16,6 +16,7 @@ namespace {
 // A two-column table file (slip speed in m/s, friction coefficient): "#" comments and a
 // header row allowed; comma, semicolon, tab or space separated.
 std::vector<std::pair<double, double>> read_friction_table_file(const std::filesystem::path& file) {
+  require_regular_file(file, "a friction table (slip speed in m/s, friction coefficient)");
   std::ifstream in(file);
   if (!in) throw InputError(located(file, 0, "cannot open the friction table"));
   std::vector<std::pair<double, double>> rows;

@@ -13,7 +13,7 @@
 namespace caskdem {
 
 toml::table parse_toml_file(const std::filesystem::path& file) {
-  if (!std::filesystem::exists(file)) throw InputError(located(file, 0, "no such file"));
+  require_regular_file(file, "a TOML file");
   try {
     return toml::parse_file(file.string());
   } catch (const toml::parse_error& error) {

@@ -76,8 +76,9 @@ const nlohmann::json* find_fit(const nlohmann::json& j, const std::string& model
 void take_from_file(const std::filesystem::path& file, const diagnosis::ModelVariant& variant,
                     std::vector<double>& point, std::vector<std::string>& source,
                     std::vector<double>& heldout_standard_error) {
+  require_regular_file(file, "a diagnosis.json, calibration.json or truth.json");
   std::ifstream in(file);
-  if (!in) throw InputError(located(file, 0, "no such file (expected a diagnosis.json, calibration.json or truth.json)"));
+  if (!in) throw InputError(located(file, 0, "cannot be opened (expected a diagnosis.json, calibration.json or truth.json)"));
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);
@@ -129,7 +130,7 @@ void take_from_file(const std::filesystem::path& file, const diagnosis::ModelVar
 
 // The footprint rule a diagnosis.json kept ("" for any other file, or none).
 std::string footprint_kept_in(const std::string& file) {
-  if (file.empty()) return "";
+  if (file.empty() || !std::filesystem::is_regular_file(file)) return "";
   std::ifstream in(file);
   const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
   if (j.is_discarded() || !j.is_object() || !j.contains("footprint") || !j["footprint"].is_string()) return "";

@@ -27,11 +27,24 @@ std::string lower_case(std::string_view s) {
   return out;
 }
 
-std::vector<std::string> read_text_lines(const std::filesystem::path& file, const std::string& expected) {
+void require_regular_file(const std::filesystem::path& file, const std::string& expected, std::uintmax_t largest) {
   std::error_code ec;
   const auto status = std::filesystem::status(file, ec);
   if (!std::filesystem::exists(status)) fail_at(file, 0, "no such file; expected the path of " + expected);
   if (std::filesystem::is_directory(status)) fail_at(file, 0, "is a directory; expected " + expected);
+  if (!std::filesystem::is_regular_file(status)) {
+    fail_at(file, 0, "is not a regular file (a device, a FIFO or a socket); expected " + expected);
+  }
+  const std::uintmax_t size = std::filesystem::file_size(file, ec);
+  if (ec) fail_at(file, 0, "its size cannot be read; expected " + expected + " that can be read");
+  if (size > largest) {
+    fail_at(file, 0, "is " + std::to_string(size) + " bytes, more than the " + std::to_string(largest) +
+                         " read at most; expected " + expected);
+  }
+}
+
+std::vector<std::string> read_text_lines(const std::filesystem::path& file, const std::string& expected) {
+  require_regular_file(file, expected);
   std::ifstream in(file, std::ios::binary);
   if (!in) fail_at(file, 0, "cannot be opened for reading; expected " + expected + " that can be read");
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());

@@ -2,6 +2,7 @@
 // Reading the text files users bring (accelerograms, measured tests): one place that turns a
 // file into lines and a token into a number, with the same checks and messages for both.
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -15,6 +16,16 @@ std::string_view trim(std::string_view s);
 
 // In lower case (ASCII), for names compared without case.
 std::string lower_case(std::string_view s);
+
+// The largest text input read (a case, an ensemble, a record, a measured test): far above
+// any real one (a 1e5-sample record is a few MB), so a wrong path is refused, not read.
+inline constexpr std::uintmax_t kLargestTextFile = 256u << 20;
+
+// Before a file is opened: an InputError naming it unless it is a regular file (a missing
+// path, a directory, a device such as /dev/zero, a FIFO or a socket would fail late, hang or
+// read without end) of at most `largest` bytes; `expected` says what was wanted.
+void require_regular_file(const std::filesystem::path& file, const std::string& expected,
+                          std::uintmax_t largest = kLargestTextFile);
 
 // The file's lines, without line ends (LF or CRLF) and without a UTF-8 byte-order mark. A
 // missing, unreadable, UTF-16 or binary file is an InputError naming the file (and line) and

@@ -375,6 +375,12 @@ Uniform make_uniform(Reporter& report, const Columns& columns) {
   if (!(step >= kSmallestSamplingStep))
     report.fail(0, kTime, "the median sampling step is " + number_text(step) + " s; expected at least " +
                               number_text(kSmallestSamplingStep) + " s (is t in seconds?)");
+  if (step > motion::kLargestRecordTimeStep)
+    report.fail(0, kTime, "the median sampling step is " + number_text(step) + " s; expected at most " +
+                              number_text(motion::kLargestRecordTimeStep) + " s (is t in seconds?)");
+  if (t.back() - t.front() > motion::kLongestRecord)
+    report.fail(0, kTime, "the test lasts " + number_text(t.back() - t.front()) + " s; expected at most " +
+                              number_text(motion::kLongestRecord) + " s");
   // Resampling would invent the table motion across a jump in time: it is a gap in the input.
   const auto longest = std::max_element(steps.begin(), steps.end());
   if (*longest - step > kLongestBridgedInputGap + kGapRoundoff) {

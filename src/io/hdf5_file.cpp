@@ -1,5 +1,8 @@
 #include "io/hdf5_file.h"
 
+#include "core/text.h"
+
+#include <limits>
 #include <stdexcept>
 
 namespace caskdem::hdf5 {
@@ -205,6 +208,7 @@ Group create_file(const std::filesystem::path& file) {
 }
 
 Group open_file(const std::filesystem::path& file) {
+  require_regular_file(file, "a caskdem result file (HDF5)", std::numeric_limits<std::uintmax_t>::max());
   quiet();
   Handle f(H5Fopen(file.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
   if (!f.valid()) throw std::runtime_error(file.string() + ": cannot open as an HDF5 file");

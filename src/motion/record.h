@@ -30,6 +30,13 @@ namespace caskdem::motion {
 inline constexpr double kLargestGroundAcceleration = 1000.0;
 inline constexpr std::string_view kLargestGroundAccelerationText = "1000 m/s^2 (about 100 g)";
 
+// The coarsest sampling and the longest duration of a record or a measured test. Strong-motion
+// records are sampled at 0.005-0.02 s and last minutes; a step above 0.1 s cannot resolve
+// rocking at a few Hz and is a header in another unit or a corrupt one (`DT= 1000 SEC`), and
+// a record of hours is not one earthquake. Readers refuse both, naming the file and line.
+inline constexpr double kLargestRecordTimeStep = 0.1;  // s
+inline constexpr double kLongestRecord = 1.0e4;        // s
+
 // A uniformly sampled acceleration record in SI: sample k is at t = k * time_step.
 struct Record {
   std::string source;             // where it came from (a path, or a description)

@@ -140,6 +140,17 @@ void check_given_step(const path& file, long line, double file_step, const ReadO
                 " s was given; expected them to agree (or no time step to be given)");
 }
 
+// A record's sampling and length within kLargestRecordTimeStep and kLongestRecord; `line` is
+// where the step comes from (the NPTS line, or the first data line).
+void check_step_and_duration(const path& file, long line, const Record& record) {
+  if (record.time_step > kLargestRecordTimeStep)
+    fail_at(file, line, "the time step is " + number_text(record.time_step) + " s; expected at most " +
+                            number_text(kLargestRecordTimeStep) + " s (a time step or time column in another unit?)");
+  if (record.duration() > kLongestRecord)
+    fail_at(file, line, "the record lasts " + number_text(record.duration()) + " s; expected at most " +
+                            number_text(kLongestRecord) + " s");
+}
+
 // ---- PEER .AT2 --------------------------------------------------------------------------
 
 struct At2Header {
@@ -224,6 +235,7 @@ Record read_at2(const path& file, const std::vector<std::string>& lines, std::si
     fail_at(file, npts_line,
             "found " + std::to_string(record.acceleration.size()) + " values after this line; " + expected_count +
                 " (is the file cut short?)");
+  check_step_and_duration(file, npts_line, record);
   return record;
 }
 
@@ -352,6 +364,7 @@ Record read_columns(const path& file, const std::vector<std::string>& lines, con
   }
   record.acceleration.reserve(samples.size());
   for (const Sample& s : samples) record.acceleration.push_back(s.a);
+  check_step_and_duration(file, first_data_line, record);
   return record;
 }
 

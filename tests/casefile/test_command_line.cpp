@@ -1,6 +1,9 @@
 // The command line on bad input: one clear message on stderr naming the file and the line
 // or key, and a non-zero exit; on good input, the promised files.
 
+#include <sys/stat.h>
+
+#include <algorithm>
 #include <filesystem>
 #include <string>
 #include <vector>
@@ -25,6 +28,36 @@ TEST_F(CommandLine, MissingCaseFile) {
   const Outcome o = run_caskdem("run /nonexistent/case.toml");
   EXPECT_NE(o.status, 0);
   EXPECT_THAT(o.output, HasSubstr("/nonexistent/case.toml: no such file"));
+}
+
+// A device or a FIFO given where a file is read is refused before it is opened, by every
+// command: `caskdem motion /dev/zero` read without end, and opening a FIFO waits for a writer.
+// `timeout` turns a hang into a failure here rather than a stalled test run.
+TEST_F(CommandLine, ADeviceOrAFifoIsRefusedByEveryCommandBeforeReading) {
+  const std::filesystem::path fifo = dir_ / "input.fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  const std::filesystem::path measured = dir_ / "measured";
+  std::filesystem::create_directories(measured);
+  ASSERT_EQ(::mkfifo((measured / "specimen.toml").c_str(), 0600), 0);
+  const std::string out = (dir_ / "out").string();
+  struct Case {
+    std::string arguments, file;
+  };
+  const std::vector<Case> cases = {
+      {"motion /dev/zero --unit g", "/dev/zero"},
+      {"motion " + fifo.string() + " --unit g", fifo.string()},
+      {"run /dev/zero --out " + out, "/dev/zero"},
+      {"run " + fifo.string() + " --out " + out, fifo.string()},
+      {"ensemble /dev/zero --out " + out + ".h5", "/dev/zero"},
+      {"plot /dev/zero", "/dev/zero"},
+      {"diagnose " + measured.string() + " --out " + out, (measured / "specimen.toml").string()},
+  };
+  for (const Case& c : cases) {
+    const Outcome o = testing::run_shell("timeout 60 " + std::string(CASKDEM_BINARY) + " " + c.arguments);
+    EXPECT_EQ(o.status, 2) << c.arguments << ": " << o.output;
+    EXPECT_THAT(o.output, HasSubstr(c.file + ": is not a regular file")) << c.arguments;
+    EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << "one message: " << o.output;
+  }
 }
 
 TEST_F(CommandLine, MalformedRecordLineNamesFileAndLine) {

@@ -491,6 +491,14 @@ TEST_F(MeasuredTestFiles, ASamplingStepBelowAMicrosecondIsAnError) {
                     HasSubstr("expected at least 1e-06 s")));
 }
 
+// A time column in milliseconds read as seconds, or a corrupt one, is refused (as records are),
+// not taken as a test sampled once a second.
+TEST_F(MeasuredTestFiles, ASamplingStepAboveATenthOfASecondIsAnError) {
+  EXPECT_THAT(error_of(write("slow.csv", csv_text(required_columns(), uniform_times(rows, 1.0)))),
+              AllOf(HasSubstr("slow.csv"), HasSubstr("t:"), HasSubstr("median sampling step is 1 s"),
+                    HasSubstr("expected at most 0.1 s")));
+}
+
 TEST_F(MeasuredTestFiles, AJumpInTimeIsAGapInTheTable) {
   // Rows 20 on are 1 s late: resampling would invent the table motion across that second.
   auto times = uniform_times(rows, 0.01);

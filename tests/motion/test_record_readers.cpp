@@ -2,6 +2,8 @@
 // the data's sources) and against malformed files, whose errors must name the file, the line
 // and what was expected.
 
+#include <sys/stat.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -130,6 +132,32 @@ TEST_F(MotionFiles, MissingFile) {
 
 TEST_F(MotionFiles, ADirectoryIsNotARecord) {
   EXPECT_THAT(error_of(dir_, {}), AllOf(HasSubstr(dir_.string()), HasSubstr("directory"), HasSubstr("expected")));
+}
+
+// Neither a FIFO (opening it would wait for a writer) nor a device (/dev/zero reads without
+// end) is read: both are refused before they are opened.
+TEST_F(MotionFiles, ADeviceOrAFifoIsRefusedBeforeItIsOpened) {
+  EXPECT_THAT(error_of("/dev/zero", in_g()),
+              AllOf(HasSubstr("/dev/zero: is not a regular file"), HasSubstr("expected an acceleration record file")));
+  const fs::path fifo = dir_ / "record.fifo";
+  ASSERT_EQ(::mkfifo(fifo.c_str(), 0600), 0);
+  EXPECT_THAT(error_of(fifo, in_g()), HasSubstr(fifo.string() + ": is not a regular file"));
+}
+
+// A step in another unit (`DT= 1000 SEC`, a time column in ms) or a record of hours is
+// refused on the line the step comes from, not run as a 2,000 s record of three samples.
+TEST_F(MotionFiles, ATimeStepAboveATenthOfASecondOrARecordOfHoursIsRefused) {
+  const auto at2 = write("slow.AT2", at2_header + "NPTS=     3, DT=  1000 SEC\n  .1E-01  .2E-01  .3E-01\n");
+  EXPECT_THAT(error_of(at2, {}), AllOf(HasSubstr("slow.AT2:4:"), HasSubstr("the time step is 1000 s"),
+                                        HasSubstr("expected at most 0.1 s")));
+  const auto milliseconds = write("ms.csv", "t,a\n0,0.1\n10,0.2\n20,0.1\n");
+  EXPECT_THAT(error_of(milliseconds, in_g()), AllOf(HasSubstr("ms.csv:2:"), HasSubstr("the time step is 10 s")));
+  std::string zeros;
+  for (int k = 0; k < 100'002; ++k) zeros += "0\n";
+  ReadOptions tenth = in_g();
+  tenth.time_step = 0.1;
+  EXPECT_THAT(error_of(write("hours.txt", zeros), tenth),
+              AllOf(HasSubstr("hours.txt:1:"), HasSubstr("the record lasts 10000.1 s"), HasSubstr("expected at most 10000 s")));
 }
 
 TEST_F(MotionFiles, NonNumericValueInTheData) {
@@ -301,10 +329,10 @@ TEST_F(MotionFiles, SeparatorsBomCrlfAndSiUnits) {
   ReadOptions si;
   si.unit = AccelerationUnit::si;
   for (const std::string& text : {std::string("\xEF\xBB\xBFtime;acc\r\n0;1.5\r\n0,5;2.5\r\n"),  // decimal comma: not numeric
-                                  std::string("t\ta\n0\t1.5\n0.5\t2.5\n1.0\t-3\n"),
-                                  std::string("\xEF\xBB\xBF# x\r\nt;a\r\n0;1.5\r\n0.5;2.5\r\n1.0;-3\r\n"),
-                                  std::string("Free text: 1.5 Hz\n t , a \n0 , 1.5,\n0.5, 2.5,\n1.0 , -3,\n"),
-                                  std::string("0   1.5\n\n0.5  +2.5\n# note\n1.0  -3e0\n")}) {
+                                  std::string("t\ta\n0\t1.5\n0.05\t2.5\n0.1\t-3\n"),
+                                  std::string("\xEF\xBB\xBF# x\r\nt;a\r\n0;1.5\r\n0.05;2.5\r\n0.1;-3\r\n"),
+                                  std::string("Free text: 1.5 Hz\n t , a \n0 , 1.5,\n0.05, 2.5,\n0.1 , -3,\n"),
+                                  std::string("0   1.5\n\n0.05  +2.5\n# note\n0.1  -3e0\n")}) {
     const auto file = write("sep.txt", text);
     if (text.find("0,5") != std::string::npos) {
       EXPECT_THAT(error_of(file, si), AllOf(HasSubstr("sep.txt:3:"), HasSubstr("'0,5'"), HasSubstr("expected 2 numbers")));
@@ -312,7 +340,7 @@ TEST_F(MotionFiles, SeparatorsBomCrlfAndSiUnits) {
     }
     const Record record = read_record(file, si);
     ASSERT_EQ(record.acceleration.size(), 3u) << text;
-    EXPECT_DOUBLE_EQ(record.time_step, 0.5) << text;
+    EXPECT_DOUBLE_EQ(record.time_step, 0.05) << text;
     EXPECT_DOUBLE_EQ(record.acceleration[0], 1.5) << text;
     EXPECT_DOUBLE_EQ(record.acceleration[2], -3.0) << text;
   }
