@@ -159,6 +159,14 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
     TableReader t(*table, file, "motions[" + std::to_string(i) + "]", static_cast<long>(table->source().begin.line),
                   root.schema());
     std::string label = t.optional_string("name").value_or("");
+    // [intensity] scales every motion to each level, so a factor or target of its own would
+    // be silently undone.
+    for (const char* key : {"scale", "target_pga", "target_pgv"}) {
+      if (t.has(key)) {
+        t.fail(key, "an ensemble scales each motion to the [intensity] levels; expected no scale, target_pga or "
+                    "target_pgv in [[motions]]");
+      }
+    }
     MotionSpec m = read_motion(t);
     if (m.kind == MotionSpec::Kind::none) t.fail("kind", "an ensemble motion must move the table");
     if (label.empty()) {
@@ -277,6 +285,15 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
       }
     }
     if (e.limit_states.empty()) t.fail("tip_over", "expected at least one limit state");
+    // Each limit state is a group of the result file, named by its threshold (6 digits):
+    // two alike would collide only when the finished run is written.
+    for (std::size_t i = 0; i < e.limit_states.size(); ++i) {
+      for (std::size_t j = 0; j < i; ++j) {
+        if (e.limit_states[i].name != e.limit_states[j].name) continue;
+        t.fail(e.limit_states[i].kind == LimitState::Kind::sliding ? "sliding" : "rotation_ratio",
+               "the threshold " + e.limit_states[i].name + " is given twice; expected distinct thresholds");
+      }
+    }
     t.reject_unknown_keys();
   }
 

@@ -37,6 +37,27 @@ std::string error_of(const std::filesystem::path& file) {
   return "no error";
 }
 
+// A motion's own factor or target would be undone by the scaling to each [intensity] level:
+// refused at its key, not ignored.
+TEST_F(EnsembleErrors, AMotionScaleOrTargetIsRefused) {
+  for (const char* key : {"scale = 2", "target_pga = \"0.3 g\"", "target_pgv = \"20 cm/s\""}) {
+    const std::string name = std::string(key).substr(0, std::string(key).find(' '));
+    const auto file = variant(name, "cycles = 3\n", "cycles = 3\n" + std::string(key) + "\n");
+    const std::string e = error_of(file);
+    EXPECT_THAT(e, HasSubstr(file.string() + ":")) << key;
+    EXPECT_THAT(e, HasSubstr("key motions[0]." + name)) << e;
+    EXPECT_THAT(e, HasSubstr("expected no scale, target_pga or target_pgv")) << e;
+  }
+}
+
+// Two limit states alike ("2 cm" and "20 mm") would collide in the result file after the run;
+// they are refused when the file is read.
+TEST_F(EnsembleErrors, ADuplicateThresholdIsRefusedBeforeTheRun) {
+  const auto file = variant("duplicate", "sliding = [\"2 cm\"]", "sliding = [\"2 cm\", \"20 mm\"]");
+  EXPECT_THAT(error_of(file), HasSubstr("key limit_states.sliding: the threshold sliding_0.02m is given twice; "
+                                        "expected distinct thresholds"));
+}
+
 TEST_F(EnsembleErrors, UnknownDistribution) {
   const auto file = variant("weibull", "distribution = \"lognormal\"", "distribution = \"weibull\"");
   const std::string e = error_of(file);
