@@ -1,6 +1,12 @@
 #include "io/run_output.h"
 
+#include <spawn.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <iomanip>
 #include <sstream>
@@ -164,18 +170,42 @@ void write_run_hdf5(const std::filesystem::path& file, const RunReport& report) 
   }
 }
 
+// The interpreter is started without a shell, its arguments passed as a vector: no path (a
+// quote, a space, a `$(...)`) can break the command or run one of its own.
 void run_plot_script(const std::string& script, const std::vector<std::string>& arguments) {
   const std::filesystem::path path = std::filesystem::path(build_info::source_dir) / "src" / "plots" / script;
-  std::string command = std::string(build_info::python) + " '" + path.string() + "'";
-  for (const std::string& a : arguments) command += " '" + a + "'";
-  command += " 2>&1";
-  std::FILE* pipe = popen(command.c_str(), "r");
-  if (!pipe) throw std::runtime_error("cannot start " + std::string(build_info::python));
+  std::vector<std::string> words = {build_info::python, path.string()};
+  words.insert(words.end(), arguments.begin(), arguments.end());
+  std::vector<char*> argv;
+  for (std::string& w : words) argv.push_back(w.data());
+  argv.push_back(nullptr);
+
+  int fds[2];
+  if (pipe(fds) != 0) throw std::runtime_error("cannot start " + std::string(build_info::python) + ": no pipe");
+  posix_spawn_file_actions_t actions;
+  posix_spawn_file_actions_init(&actions);
+  posix_spawn_file_actions_addclose(&actions, fds[0]);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], STDOUT_FILENO);
+  posix_spawn_file_actions_adddup2(&actions, fds[1], STDERR_FILENO);
+  posix_spawn_file_actions_addclose(&actions, fds[1]);
+  pid_t child = 0;
+  const int spawned = posix_spawn(&child, argv[0], &actions, nullptr, argv.data(), environ);
+  posix_spawn_file_actions_destroy(&actions);
+  close(fds[1]);
   std::string output;
   char buffer[512];
-  while (std::fgets(buffer, sizeof buffer, pipe)) output += buffer;
-  const int status = pclose(pipe);
-  if (status != 0) throw std::runtime_error("plotting with " + script + " failed:\n" + output);
+  for (ssize_t n; (n = read(fds[0], buffer, sizeof buffer)) != 0;) {
+    if (n > 0) output.append(buffer, static_cast<std::size_t>(n));
+    else if (errno != EINTR) break;
+  }
+  close(fds[0]);
+  if (spawned != 0) throw std::runtime_error("cannot start " + std::string(build_info::python) + ": " + std::strerror(spawned));
+  int status = 0;
+  while (waitpid(child, &status, 0) < 0 && errno == EINTR) {
+  }
+  if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+    throw std::runtime_error("plotting with " + script + " failed:\n" + output);
+  }
 }
 
 }  // namespace caskdem

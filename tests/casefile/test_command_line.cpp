@@ -138,6 +138,20 @@ TEST_F(CommandLine, BadCaseValueExitsNonZeroWithOneMessage) {
   EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << o.output;
 }
 
+// The plotting interpreter gets its paths as arguments, not through a shell: a quote or a
+// `$(...)` in the output path neither breaks the plot nor runs a command.
+TEST_F(CommandLine, APathWithAQuoteOrACommandIsPlottedAsItIs) {
+  const auto out = dir_ / "it's $(touch injected)";
+  std::string quoted = "'";  // for the test's own shell: ' becomes '\''
+  for (char c : out.string()) quoted += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  quoted += "'";
+  const Outcome o = testing::run_shell("cd '" + dir_.string() + "' && " + std::string(CASKDEM_BINARY) + " run " +
+                                       testing::case_path("default-pulse.toml") + " --out " + quoted);
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_TRUE(std::filesystem::exists(out / "history.png"));
+  EXPECT_FALSE(std::filesystem::exists(dir_ / "injected"));
+}
+
 TEST_F(CommandLine, RunWritesSummaryHistoryHdf5AndPlot) {
   const auto out = dir_ / "out";
   const Outcome o = run_caskdem("run " + testing::case_path("default-pulse.toml") + " --out " + out.string());
