@@ -272,15 +272,51 @@ struct Sample {
   double a;  // m/s^2
 };
 
-Record read_columns(const path& file, const std::vector<std::string>& lines, const ReadOptions& options) {
-  if (!options.unit)
-    fail_at(file, 0,
-            "a column file does not state its unit; expected the unit to be given with the record "
-            "(g, gal or m/s^2)");
+// The acceleration unit a column header states in brackets after the column's name
+// (`Accel[g]`, `Acceleration (g's)`, `acc (cm/s^2)`): the last bracketed word of the line, unless
+// it is the time column's; nullopt when it states none.
+std::optional<AccelerationUnit> stated_unit(const path& file, long line_number, const std::string& header) {
+  static const std::regex bracketed(R"([\(\[]\s*([^\)\]]*?)\s*[\)\]])");
+  std::optional<std::string> last;
+  for (auto it = std::sregex_iterator(header.begin(), header.end(), bracketed); it != std::sregex_iterator(); ++it) {
+    last = (*it)[1].str();
+  }
+  if (!last) return std::nullopt;
+  const std::string word = lower_case(*last);
+  if (word == "s" || word == "sec" || word == "seconds") return std::nullopt;
+  if (word == "g" || word == "g's" || word == "gs") return AccelerationUnit::g;
+  if (word == "gal" || word == "cm/s^2" || word == "cm/s2" || word == "cm/sec^2" || word == "cm/s/s")
+    return AccelerationUnit::gal;
+  if (word == "m/s^2" || word == "m/s2" || word == "m/sec^2" || word == "m/s/s") return AccelerationUnit::si;
+  fail_at(file, line_number,
+          "the header states the unit '" + *last + "'; expected an acceleration unit: g, gal (cm/s^2) or m/s^2");
+}
 
+// The unit of a column file: the one its header states, else the one given; both, they agree.
+AccelerationUnit column_unit(const path& file, long header_line, const std::string& header, const ReadOptions& options) {
+  const std::optional<AccelerationUnit> stated =
+      header_line > 0 ? stated_unit(file, header_line, header) : std::nullopt;
+  if (stated && options.unit && *stated != *options.unit) {
+    fail_at(file, header_line,
+            "the header states unit " + unit_name(*stated) + " but " + unit_name(*options.unit) +
+                " was given; expected them to agree (or no unit to be given)");
+  }
+  if (stated) return *stated;
+  if (options.unit) return *options.unit;
+  fail_at(file, header_line,
+          "the column file does not state its unit (a header such as 't, acc [g]'); expected the unit to be given "
+          "with the record (g, gal or m/s^2)");
+}
+
+Record read_columns(const path& file, const std::vector<std::string>& lines, const ReadOptions& options) {
   std::vector<Sample> samples;
   std::size_t columns = 0;  // set by the first data line
   long first_data_line = 0;
+  long header_line = 0;  // the last line of text before it: the column names
+  bool header_begins_with_number = false;
+  std::string header_bad;  // its first field that is not a number
+  std::size_t header_fields = 0;
+  AccelerationUnit unit = AccelerationUnit::si;
   for (std::size_t i = 0; i < lines.size(); ++i) {
     const long line_number = static_cast<long>(i + 1);
     const std::string_view line = trim(lines[i]);
@@ -298,7 +334,23 @@ Record read_columns(const path& file, const std::vector<std::string>& lines, con
     }
     const bool numeric = !fields.empty() && values.size() == fields.size();
     if (columns == 0) {
-      if (!numeric) continue;  // a header line
+      if (!numeric) {
+        header_line = line_number;
+        header_begins_with_number = !values.empty();
+        header_bad = std::string(bad);
+        header_fields = fields.size();
+        continue;
+      }
+      // A line just above the data that begins with a number and has as many fields as the
+      // data is their malformed first row ("0.00, 0.1x"), not a header to drop.
+      if (header_begins_with_number && header_fields == fields.size()) {
+        fail_at(file, header_line,
+                "found '" + header_bad + "' in " + quote_line(lines[static_cast<std::size_t>(header_line - 1)]) +
+                    "; expected numbers as on line " + std::to_string(line_number) +
+                    " (a malformed first data row), or a header line of column names");
+      }
+      unit = column_unit(file, header_line, header_line > 0 ? lines[static_cast<std::size_t>(header_line - 1)] : "",
+                         options);
       if (values.size() > 2)
         fail_at(file, line_number,
                 "found " + std::to_string(values.size()) +
@@ -317,11 +369,12 @@ Record read_columns(const path& file, const std::vector<std::string>& lines, con
                   std::to_string(first_data_line));
     if (!std::isfinite(values.front()))
       fail_at(file, line_number, "found " + quote_line(line) + "; expected finite numbers");
-    samples.push_back(
-        {line_number, values.front(), sample_in_si(file, line_number, fields.back(), values.back(), *options.unit)});
+    samples.push_back({line_number, values.front(), sample_in_si(file, line_number, fields.back(), values.back(), unit)});
   }
-  if (samples.empty())
+  if (samples.empty()) {
+    (void)column_unit(file, header_line, header_line > 0 ? lines[static_cast<std::size_t>(header_line - 1)] : "", options);
     fail_at(file, 0, "no data lines; expected lines of numbers 't, a' or 'a' after any header");
+  }
 
   Record record;
   record.source = file.string();

@@ -306,6 +306,45 @@ TEST_F(MotionFiles, ColumnFileWithoutUnit) {
   EXPECT_THAT(error_of(file, {}), AllOf(HasSubstr("no_unit.csv"), HasSubstr("unit"), HasSubstr("g, gal or m/s^2"), HasSubstr("expected")));
 }
 
+// A first data row with a bad field is an error, not a header to drop (a record one sample
+// short, silently); a title that begins with a number but is not shaped like the data stays a
+// header.
+TEST_F(MotionFiles, AMalformedFirstDataRowIsAnErrorNotAHeader) {
+  const auto file = write("first_row.csv", "t,a\n0.00,0.1x\n0.01,0.2\n0.02,0.3\n");
+  EXPECT_THAT(error_of(file, in_g()), AllOf(HasSubstr("first_row.csv:2:"), HasSubstr("'0.1x'"),
+                                             HasSubstr("malformed first data row")));
+  const auto titled = write("titled.txt", "1995 Kobe earthquake, KJMA\nt a\n0 0.1\n0.01 0.2\n");
+  const Record record = read_record(titled, in_g());
+  EXPECT_EQ(record.acceleration.size(), 2u);
+}
+
+// A header that states the acceleration's unit is read in it without one given; a given unit
+// must agree with it; a header that states none still needs one.
+TEST_F(MotionFiles, AUnitStatedInTheHeaderIsTheRecordsUnit) {
+  const struct {
+    const char* header;
+    double si_per_unit;
+  } headers[] = {{"t, Accel[g]", units::standard_gravity},
+                 {"time (s); Acceleration (g's)", units::standard_gravity},
+                 {"t acc (cm/s^2)", 0.01},
+                 {"Time [s], a [m/s2]", 1.0}};
+  for (const auto& h : headers) {
+    const auto file = write("stated.csv", std::string(h.header) + "\n0 0.5\n0.01 -1\n");
+    const Record record = read_record(file, {});
+    ASSERT_EQ(record.acceleration.size(), 2u) << h.header;
+    EXPECT_DOUBLE_EQ(record.acceleration[0], 0.5 * h.si_per_unit) << h.header;
+  }
+  ReadOptions gal;
+  gal.unit = AccelerationUnit::gal;
+  const auto in_g_header = write("g_header.csv", "t, Accel[g]\n0, 0.5\n0.01, -1\n");
+  EXPECT_THAT(error_of(in_g_header, gal), AllOf(HasSubstr("g_header.csv:1:"), HasSubstr("states unit g but gal was given")));
+  EXPECT_EQ(read_record(in_g_header, in_g()).acceleration.size(), 2u);
+  const auto feet = write("feet.csv", "t, a [ft/s^2]\n0, 0.5\n0.01, -1\n");
+  EXPECT_THAT(error_of(feet, in_g()), AllOf(HasSubstr("feet.csv:1:"), HasSubstr("'ft/s^2'"), HasSubstr("expected an acceleration unit")));
+  const auto seconds_only = write("seconds.csv", "t (s), a\n0, 0.5\n0.01, -1\n");
+  EXPECT_THAT(error_of(seconds_only, {}), AllOf(HasSubstr("seconds.csv:1:"), HasSubstr("does not state its unit")));
+}
+
 TEST_F(MotionFiles, SingleColumnNeedsATimeStep) {
   const auto file = write("one_column.txt", "Accelerations in gal\n10\n-20\n30\n");
   ReadOptions options;
