@@ -145,10 +145,11 @@ void add_plot(CLI::App& app) {
   cmd->callback([options]() {
     // What the plotting script reads, checked here: one message instead of a Python traceback.
     try {
+      verify_ensemble_file(options->file);
       const hdf5::Group root = hdf5::open_file(options->file);
-      if (!root.has("realisations") || !root.has("limit_states"))
-        throw InputError(located(options->file, 0, "has no realisations and limit_states groups; expected a result "
-                                                    "file of caskdem ensemble whose run completed"));
+      if (!root.has("limit_states"))
+        throw InputError(located(options->file, 0, "has no limit_states group; expected a result file of caskdem "
+                                                    "ensemble whose run completed"));
     } catch (const std::runtime_error& e) {
       if (dynamic_cast<const InputError*>(&e)) throw;
       throw InputError(located(options->file, 0, std::string(e.what()) + "; expected a result file of caskdem ensemble"));

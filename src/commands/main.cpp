@@ -1,6 +1,7 @@
 // caskdem: does a free-standing cask rock, slide or tip over in an earthquake?
 // The command line: one executable, one subcommand per task.
 
+#include <csignal>
 #include <iostream>
 
 #include <CLI/CLI.hpp>
@@ -10,6 +11,9 @@
 #include "core/error.h"
 
 int main(int argc, char** argv) {
+  // A file-size limit reached while writing (ulimit -f) is then a failed write, reported with
+  // the file and leaving the previous checkpoint, not a signal that kills the run.
+  std::signal(SIGXFSZ, SIG_IGN);
   CLI::App app{"caskdem: rocking, sliding and tip-over of free-standing casks in earthquakes (2D DEM)"};
   app.set_version_flag("--version", std::string(caskdem::build_info::version));
   app.require_subcommand(1);

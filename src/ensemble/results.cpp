@@ -43,6 +43,25 @@ void for_each_integer(EnsembleResults& r, F&& f) {
   f("impacts", r.impacts);
 }
 
+constexpr const char* kResultFile = "a result file of caskdem ensemble";
+
+// The realisations of an open result file (whose seal was checked), each of full length.
+void read_realisations(const std::filesystem::path& file, const hdf5::Group& root, EnsembleResults& results) {
+  results.size = root.integer_attribute("realisations");
+  hdf5::Group realisations = root.open_group("realisations");
+  results.completed = realisations.read_bytes("completed");
+  for_each_double(results, [&](const char* name, std::vector<double>& v, const char*) { v = realisations.read_doubles(name); });
+  for_each_integer(results, [&](const char* name, std::vector<std::int64_t>& v) { v = realisations.read_integers(name); });
+  bool sized = static_cast<std::int64_t>(results.completed.size()) == results.size;
+  for_each_double(results, [&](const char*, std::vector<double>& v, const char*) {
+    sized = sized && static_cast<std::int64_t>(v.size()) == results.size;
+  });
+  for_each_integer(results, [&](const char*, std::vector<std::int64_t>& v) {
+    sized = sized && static_cast<std::int64_t>(v.size()) == results.size;
+  });
+  if (!sized) throw InputError(located(file, 0, "its datasets are not all of the stated number of realisations"));
+}
+
 }  // namespace
 
 EnsembleResults::EnsembleResults(const EnsemblePlan& plan) : size(plan.size()) {
@@ -96,12 +115,14 @@ std::vector<std::int64_t> EnsembleResults::pending() const {
   return indices;
 }
 
-void write_ensemble_file(const std::filesystem::path& file, const EnsemblePlan& plan, const EnsembleResults& results,
-                         const RunInformation& run, const std::vector<LimitStateSummary>* limit_states) {
+namespace {
+
+// The result file's image, built in memory.
+std::vector<char> result_image(const std::filesystem::path& file, const EnsemblePlan& plan, const EnsembleResults& results,
+                               const RunInformation& run, const std::vector<LimitStateSummary>* limit_states) {
   const EnsembleSpec& spec = plan.spec();
-  const std::filesystem::path temporary = file.string() + ".partial-" + std::to_string(::getpid());
   {
-    hdf5::Group root = hdf5::create_file(temporary);
+    hdf5::Group root = hdf5::create_in_memory(file.string());
     root.attribute("caskdem_version", std::string(build_info::version));
     root.attribute("ensemble_file", spec.file.string());
     root.attribute("ensemble_toml", spec.toml_text);
@@ -198,12 +219,31 @@ void write_ensemble_file(const std::filesystem::path& file, const EnsemblePlan& 
         }
       }
     }
+    return hdf5::file_image(root);
+  }
+}
+
+}  // namespace
+
+void write_ensemble_file(const std::filesystem::path& file, const EnsemblePlan& plan, const EnsembleResults& results,
+                         const RunInformation& run, const std::vector<LimitStateSummary>* limit_states) {
+  const std::filesystem::path temporary = file.string() + ".partial-" + std::to_string(::getpid());
+  try {
+    hdf5::write_sealed(temporary, result_image(file, plan, results, run, limit_states));
+  } catch (const std::exception& e) {
+    // The previous file (a checkpoint, with every realisation it holds) stays as it was.
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw std::runtime_error(std::string(e.what()) + "; " + file.string() +
+                             (std::filesystem::exists(file) ? " is left as it was" : " was not written"));
   }
   std::filesystem::rename(temporary, file);
 }
 
+
 EnsembleResults read_ensemble_results(const std::filesystem::path& file, const EnsemblePlan& plan, double* wall_seconds) {
   EnsembleResults results(plan);
+  hdf5::check_seal(file, kResultFile);
   try {
     hdf5::Group root = hdf5::open_file(file);
     if (root.string_attribute("ensemble_toml") != plan.spec().toml_text) {
@@ -214,18 +254,24 @@ EnsembleResults read_ensemble_results(const std::filesystem::path& file, const E
       throw InputError(located(file, 0, "holds a different number of realisations: cannot resume"));
     }
     if (wall_seconds) *wall_seconds = root.double_attribute("wall_time_s");
-    hdf5::Group realisations = root.open_group("realisations");
-    results.completed = realisations.read_bytes("completed");
-    for_each_double(results, [&](const char* name, std::vector<double>& v, const char*) { v = realisations.read_doubles(name); });
-    for_each_integer(results, [&](const char* name, std::vector<std::int64_t>& v) { v = realisations.read_integers(name); });
-    for (const auto* v : {&results.level, &results.max_abs_rotation}) {
-      if (static_cast<std::int64_t>(v->size()) != results.size) throw InputError(located(file, 0, "is truncated"));
-    }
+    read_realisations(file, root, results);
   } catch (const std::runtime_error& e) {
     if (dynamic_cast<const InputError*>(&e)) throw;
     throw InputError(located(file, 0, std::string("cannot resume from it: ") + e.what()));
   }
   return results;
+}
+
+void verify_ensemble_file(const std::filesystem::path& file) {
+  EnsembleResults results;
+  hdf5::check_seal(file, kResultFile);
+  try {
+    const hdf5::Group root = hdf5::open_file(file);
+    read_realisations(file, root, results);
+  } catch (const std::runtime_error& e) {
+    if (dynamic_cast<const InputError*>(&e)) throw;
+    throw InputError(located(file, 0, std::string(e.what()) + "; expected " + kResultFile));
+  }
 }
 
 }  // namespace caskdem

@@ -4,6 +4,8 @@
 // The file is written whole to a temporary name and renamed over the previous one, so the
 // file on disk is always a complete, valid HDF5 file: a run killed at any moment leaves the
 // last checkpoint, with its mask of completed realisations, and `--resume` continues from it.
+// The file is built in memory and written sealed (hdf5::write_sealed: a CRC-32 of its bytes in its user
+// block), and `--resume` and `plot` check the seal before HDF5 reads anything.
 // Layout (docs/output.md):
 //   /                   attributes: caskdem_version, ensemble_file, ensemble_toml, title,
 //                       wall_time_s, completed, realisations, time_step_s, intensity_measure, ...
@@ -35,6 +37,7 @@ struct EnsembleResults {
   std::vector<double> max_abs_rotation, max_rotation_ratio, max_abs_slide, residual_slide, max_uplift, end_time,
       tip_over_time, instability_time;
 
+  EnsembleResults() = default;
   explicit EnsembleResults(const EnsemblePlan& plan);
   void record(std::int64_t index, const RealisationOutcome& outcome, double stability_angle);
   std::int64_t completed_count() const;
@@ -54,7 +57,11 @@ void write_ensemble_file(const std::filesystem::path& file, const EnsemblePlan& 
                          const RunInformation& run, const std::vector<LimitStateSummary>* limit_states);
 
 // Reads the results of a checkpoint for `plan`; throws InputError when the file does not
-// belong to this ensemble (another ensemble file, another size) or cannot be read.
+// belong to this ensemble (another ensemble file, another size), cannot be read, or when its
+// seal fails (a file cut short, flipped bits; hdf5::check_seal).
 EnsembleResults read_ensemble_results(const std::filesystem::path& file, const EnsemblePlan& plan, double* wall_seconds);
+
+// For `plot`: an InputError unless the file's seal holds and its realisations are whole.
+void verify_ensemble_file(const std::filesystem::path& file);
 
 }  // namespace caskdem

@@ -1,9 +1,18 @@
 #include "io/hdf5_file.h"
 
+#include "core/error.h"
 #include "core/text.h"
 
+#include <cstdio>
+#include <cstring>
+#include <fstream>
 #include <limits>
 #include <stdexcept>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include <boost/crc.hpp>
 
 namespace caskdem::hdf5 {
 
@@ -214,6 +223,91 @@ Group open_file(const std::filesystem::path& file) {
   if (!f.valid()) throw std::runtime_error(file.string() + ": cannot open as an HDF5 file");
   Handle root(H5Gopen2(f.get(), "/", H5P_DEFAULT), H5Gclose);
   return Group(std::move(root), "/", file);
+}
+
+namespace {
+
+constexpr std::string_view kSealMagic = "caskdem seal crc32 ";
+
+// CRC-32 and length of the file's bytes after the user block.
+std::pair<std::uint32_t, std::uintmax_t> sealed_content(std::ifstream& in) {
+  boost::crc_32_type crc;
+  std::uintmax_t length = 0;
+  in.seekg(static_cast<std::streamoff>(kSealBytes));
+  std::vector<char> buffer(1 << 16);
+  while (in) {
+    in.read(buffer.data(), static_cast<std::streamsize>(buffer.size()));
+    const auto got = static_cast<std::size_t>(in.gcount());
+    crc.process_bytes(buffer.data(), got);
+    length += got;
+  }
+  return {crc.checksum(), length};
+}
+
+}  // namespace
+
+Group create_in_memory(const std::string& name) {
+  quiet();
+  Handle creation(H5Pcreate(H5P_FILE_CREATE), H5Pclose);
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (H5Pset_userblock(creation.get(), kSealBytes) < 0 || H5Pset_fapl_core(access.get(), 1 << 20, 0) < 0) {
+    throw std::runtime_error(name + ": cannot set up an HDF5 file in memory");
+  }
+  Handle f(H5Fcreate(name.c_str(), H5F_ACC_TRUNC, creation.get(), access.get()), H5Fclose);
+  if (!f.valid()) throw std::runtime_error(name + ": cannot create the HDF5 file in memory");
+  Handle root(H5Gopen2(f.get(), "/", H5P_DEFAULT), H5Gclose);
+  return Group(std::move(root), "/", name);
+}
+
+std::vector<char> file_image(const Group& root) {
+  Handle f(H5Iget_file_id(root.id()), H5Fclose);
+  if (!f.valid() || H5Fflush(f.get(), H5F_SCOPE_GLOBAL) < 0) throw std::runtime_error("cannot flush the HDF5 file");
+  const ssize_t size = H5Fget_file_image(f.get(), nullptr, 0);
+  if (size <= 0) throw std::runtime_error("cannot take the HDF5 file's image");
+  std::vector<char> image(static_cast<std::size_t>(size));
+  if (H5Fget_file_image(f.get(), image.data(), image.size()) != size) {
+    throw std::runtime_error("cannot take the HDF5 file's image");
+  }
+  return image;
+}
+
+void write_sealed(const std::filesystem::path& file, const std::vector<char>& image) {
+  boost::crc_32_type crc;
+  crc.process_bytes(image.data(), image.size());
+  char seal[kSealBytes] = {};
+  std::snprintf(seal, sizeof seal, "%s%08x bytes %zu\n", std::string(kSealMagic).c_str(),
+                static_cast<unsigned>(crc.checksum()), image.size());
+  std::ofstream out(file, std::ios::binary | std::ios::trunc);
+  out.write(seal, sizeof seal);
+  out.write(image.data(), static_cast<std::streamsize>(image.size()));
+  out.close();
+  if (!out) throw std::runtime_error(file.string() + ": cannot be written whole (is the disk full?)");
+}
+
+void check_seal(const std::filesystem::path& file, const std::string& expected) {
+  require_regular_file(file, expected, std::numeric_limits<std::uintmax_t>::max());
+  std::ifstream in(file, std::ios::binary);
+  char seal[kSealBytes] = {};
+  in.read(seal, sizeof seal);
+  const std::string head(seal, strnlen(seal, sizeof seal));
+  unsigned stated_crc = 0;
+  std::uintmax_t stated_length = 0;
+  if (!in || !head.starts_with(kSealMagic) ||
+      std::sscanf(head.c_str() + kSealMagic.size(), "%8x bytes %ju", &stated_crc, &stated_length) != 2) {
+    throw InputError(located(file, 0, "has no caskdem seal (not written by this version of caskdem, or its start is "
+                                      "damaged); expected " + expected));
+  }
+  in.clear();
+  const auto [crc, length] = sealed_content(in);
+  if (length != stated_length) {
+    throw InputError(located(file, 0, "is " + std::to_string(length + kSealBytes) + " bytes where its seal says " +
+                                          std::to_string(stated_length + kSealBytes) + " (cut short, or appended to); "
+                                          "expected " + expected + " as caskdem wrote it"));
+  }
+  if (crc != stated_crc) {
+    throw InputError(located(file, 0, "its bytes do not match its seal's checksum (the file is damaged); expected " +
+                                          expected + " as caskdem wrote it"));
+  }
 }
 
 }  // namespace caskdem::hdf5

@@ -75,4 +75,17 @@ class Group {
 Group create_file(const std::filesystem::path& file);
 Group open_file(const std::filesystem::path& file);  // read-only
 
+// A sealed file is built in memory (create_in_memory) and written by write_sealed with a
+// seal in its user block (kSealBytes, which HDF5 and h5py skip): the CRC-32 and length of
+// everything after it. Every write is then checked (HDF5 does not report a failed flush at
+// close, and on a full disk left a short file that it still opened). check_seal refuses
+// (InputError naming the file) a file without a seal or whose bytes no longer match it,
+// before HDF5 parses any of it: a file cut short or with flipped bits is refused whole, where
+// HDF5 itself may read damaged values or hang on a damaged heap.
+inline constexpr std::size_t kSealBytes = 512;
+Group create_in_memory(const std::string& name);
+std::vector<char> file_image(const Group& root);  // the file after its user block
+void write_sealed(const std::filesystem::path& file, const std::vector<char>& image);
+void check_seal(const std::filesystem::path& file, const std::string& expected);
+
 }  // namespace caskdem::hdf5
