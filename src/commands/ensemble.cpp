@@ -52,6 +52,10 @@ void run_ensemble_command(const EnsembleOptions& options, const MpiSession* mpi)
   } catch (const std::invalid_argument& e) {
     throw InputError(std::string("--isa: ") + e.what());
   }
+  if (!instruction_set_available(isa)) {
+    throw InputError("--isa: " + instruction_set_name(isa) + " is not available on this machine; expected automatic (" +
+                     instruction_set_name(best_instruction_set()) + " here) or an instruction set it has");
+  }
   const std::filesystem::path out =
       options.out.empty() ? std::filesystem::path("results") / (spec.name + ".h5") : std::filesystem::path(options.out);
   bool root = true;

@@ -11,6 +11,7 @@
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
 
+#include "kernels/block.h"
 #include "support/command_line.h"
 #include "support/paper_cases.h"
 #include "support/temporary_files.h"
@@ -231,6 +232,24 @@ TEST_F(CommandLine, AnUnusableOutputPathIsRefusedFirst) {
                                        "/tests/ensemble/data/mixed-outcomes.toml --out " + dir_.string());
   EXPECT_EQ(ensemble.status, 2);
   EXPECT_THAT(ensemble.output, HasSubstr(dir_.string() + ": is a directory; expected a file name for the results"));
+}
+
+// An instruction set the machine lacks is refused before any work, naming the option; one it
+// has runs. (On a machine with AVX-512 only the second half can be seen.)
+TEST_F(CommandLine, AnInstructionSetTheMachineLacksIsRefusedFirst) {
+  const std::string ensemble = std::string(CASKDEM_SOURCE_DIR) + "/tests/ensemble/data/mixed-outcomes.toml";
+  for (const InstructionSet isa : {InstructionSet::avx512f, InstructionSet::avx2, InstructionSet::sse2}) {
+    const auto out = dir_ / (instruction_set_name(isa) + ".h5");
+    const Outcome o = run_caskdem("ensemble " + ensemble + " --isa " + instruction_set_name(isa) + " --out " +
+                                  out.string() + " --quiet --no-plot --threads 1");
+    if (instruction_set_available(isa)) {
+      EXPECT_EQ(o.status, 0) << o.output;
+    } else {
+      EXPECT_EQ(o.status, 2) << o.output;
+      EXPECT_THAT(o.output, HasSubstr("--isa: " + instruction_set_name(isa) + " is not available on this machine"));
+      EXPECT_FALSE(std::filesystem::exists(out));
+    }
+  }
 }
 
 TEST_F(CommandLine, PlottingAFileThatIsNotAnEnsembleResultSaysSo) {
