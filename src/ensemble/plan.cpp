@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/text.h"
 #include "kernels/step.h"
+#include "sim/case_run.h"
 #include "sim/free_vibration.h"
 #include "sim/rigid_equivalent.h"
 
@@ -126,6 +127,16 @@ EnsemblePlan::EnsemblePlan(const EnsembleSpec& spec, InstructionSet isa)
 
   for (const MotionSpec& m : spec_.motions) {
     motions_.push_back(make_motion(m));
+    // Each realisation is held to the bounds of a case run, before the peaks are sought.
+    const std::string& name = spec_.motion_names[intensities_.size()];
+    const double run = spec_.base.duration > 0.0 ? spec_.base.duration : motions_.back()->duration() + spec_.base.settle_time;
+    const double steps = run / model_.time_step;
+    if (!(run <= kLongestRun) || !(steps <= kMostSteps)) {
+      fail("motion " + name + ": a realisation would last " + number_text(run) + " s in " + number_text(steps) +
+           " steps of " + number_text(model_.time_step) + " s; expected at most " + number_text(kLongestRun) +
+           " s and " + number_text(kMostSteps) + " steps (a duration, mass, density or contact stiffness in the wrong "
+           "unit?)");
+    }
     MotionIntensity intensity;
     intensity.pga = motion::peak_acceleration(*motions_.back(), model_.time_step);
     intensity.pgv = motion::peak_velocity(*motions_.back(), model_.time_step);

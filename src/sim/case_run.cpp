@@ -26,13 +26,6 @@ Model build_case_model(const Case& c) {
   }
 }
 
-namespace {
-// A run longer than this (s), or of more steps, is a time step, similarity scale or stiffness
-// in the wrong unit: no test or earthquake lasts a day, and 1e10 steps take hours.
-constexpr double kLongestRun = 1e5;
-constexpr double kMostSteps = 1e10;
-}  // namespace
-
 double case_duration(const Case& c, const CaseMotions& motions) {
   if (c.duration > 0.0) return c.duration;
   double motion_end = motions.horizontal->duration();

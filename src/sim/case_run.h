@@ -14,6 +14,12 @@ struct CaseMotions {
   Excitation excitation() const { return {horizontal.get(), vertical.get()}; }
 };
 
+// A run longer than kLongestRun (s), or of more than kMostSteps steps, is a time step,
+// similarity scale or stiffness in the wrong unit: no test or earthquake lasts a day, and 1e10
+// steps take hours. Case runs and every realisation of an ensemble are held to both.
+inline constexpr double kLongestRun = 1e5;
+inline constexpr double kMostSteps = 1e10;
+
 CaseMotions make_case_motions(const Case& c);
 // Model from the case; a geometry or stability problem becomes an InputError naming the file.
 Model build_case_model(const Case& c);

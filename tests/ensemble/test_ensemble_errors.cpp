@@ -16,6 +16,7 @@
 namespace caskdem {
 namespace {
 
+using ::testing::AllOf;
 using ::testing::HasSubstr;
 
 // Variants of the mixed-outcomes ensemble, one line replaced.
@@ -56,6 +57,16 @@ TEST_F(EnsembleErrors, ADuplicateThresholdIsRefusedBeforeTheRun) {
   const auto file = variant("duplicate", "sliding = [\"2 cm\"]", "sliding = [\"2 cm\", \"20 mm\"]");
   EXPECT_THAT(error_of(file), HasSubstr("key limit_states.sliding: the threshold sliding_0.02m is given twice; "
                                         "expected distinct thresholds"));
+}
+
+// A realisation is held to a case run's bounds (1e5 s, 1e10 steps) when the plan is made,
+// before its peaks are sought, not found hours into the run: a contact stiffness a hundred
+// times too high under a long sine train (a 20,000 s realisation of 1.2e10 steps).
+TEST_F(EnsembleErrors, ARealisationLongerThanACaseRunMayBeIsRefused) {
+  const auto stiff = variant_of(variant("stiff", "cycles = 3\n", "cycles = 24000\n"), "stiff-long.toml",
+                                "normal_stiffness = \"2.38e3 bar/cm\"", "normal_stiffness = \"2.38e5 bar/cm\"");
+  EXPECT_THAT(error_of(stiff), AllOf(HasSubstr("stiff-long.toml: motion motion 1: a realisation would last 20001 s in 1.1"),
+                                     HasSubstr("expected at most 100000 s and 1e+10 steps")));
 }
 
 TEST_F(EnsembleErrors, UnknownDistribution) {
