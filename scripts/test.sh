@@ -6,3 +6,6 @@ scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCASKDEM_BUILD_TESTS=ON -DCASKDEM_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build build -j"$(nproc)"
 ctest --test-dir build --output-on-failure --no-tests=error -j"$(nproc)"
+# Every reader under libFuzzer with the address and undefined-behaviour sanitizers, 10 s per
+# target (bench/fuzz.sh; docs/fuzzing.md has the long runs).
+TIMEOUT=10 bench/fuzz.sh build-fuzz build-fuzz/smoke 1000000 10

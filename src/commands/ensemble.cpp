@@ -44,7 +44,7 @@ struct EnsembleOptions {
   bool resume = false, no_plot = false, quiet = false;
 };
 // One process, or one rank of an MPI job (mpi not null): only rank 0 reports and plots.
-void run_ensemble_command(const EnsembleOptions& options, const MpiSession* mpi) {
+void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const MpiSession* mpi) {
   const EnsembleSpec spec = load_ensemble(options.file);
   InstructionSet isa;
   try {
