@@ -313,7 +313,6 @@ ratios = 3
 name = "one"
 kind = "record"
 file = "record.txt"
-scale = 2
 [[motions]]
 kind = "synthetic"
 [uncertain.friction_static]
