@@ -329,7 +329,15 @@ CandidateScore score(const MeasuredSet& set, const Yardstick& yardstick, Mechani
     }
     s.measure_gain.push_back(sum_theirs > 0.0 ? 1.0 - std::sqrt(sum_mine / sum_theirs) : 0.0);
   }
+  s.heldout_gain_as_fitted = s.heldout_gain;
   s.at_off_value = at_off_value(set, mechanism, model);
+  if (s.at_off_value) {
+    // A switch at its off value has no gain by construction; what the ratio shows is the baseline
+    // parameters settling elsewhere within their errors, and ranking on it would reward that.
+    s.heldout_gain = 0.0;
+    s.heldout_tests_improved = 0;
+    std::fill(s.measure_gain.begin(), s.measure_gain.end(), 0.0);
+  }
   const double improved = double(s.heldout_tests_improved) / double(set.heldout.size());
   s.significant = !s.at_off_value && s.heldout_gain >= options.minimum_gain &&
                   s.bic_delta <= options.maximum_bic_delta && improved >= options.minimum_improved_fraction;

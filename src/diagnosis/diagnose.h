@@ -95,11 +95,14 @@ struct CandidateScore {
   // Both judged on the held-out tests at common tolerances (the larger of the two models' own).
   double heldout_error = 0.0;            // the candidate's
   double reference_heldout_error = 0.0;  // the model it extends
-  double heldout_gain = 0.0;     // 1 - heldout_error / reference_heldout_error
+  // 1 - heldout_error / reference_heldout_error; zero when the switch is at its off value (the
+  // fit is then the model it extends, and any difference is the other parameters' wander).
+  double heldout_gain = 0.0;
+  double heldout_gain_as_fitted = 0.0;  // the ratio's own value, whatever the switch
   double bic_delta = 0.0;        // against the reference model (negative: better)
   double aic_delta = 0.0;
   int heldout_tests_improved = 0;
-  std::vector<double> measure_gain;  // per measure, over the held-out tests
+  std::vector<double> measure_gain;  // per measure, over the held-out tests (zero at the off value)
   // The mechanism's switch is at its off value (within its standard error): the fit is the
   // model it extends, whatever its gain says.
   bool at_off_value = false;

@@ -90,6 +90,7 @@ nlohmann::json candidate_json(const CandidateScore& c) {
   j["heldout_error"] = c.heldout_error;
   j["reference_heldout_error"] = c.reference_heldout_error;
   j["at_off_value"] = c.at_off_value;
+  j["heldout_gain_as_fitted"] = c.heldout_gain_as_fitted;
   j["information_criterion_delta"] = c.bic_delta;
   j["information_criterion"] = "BIC";
   j["aic_delta"] = c.aic_delta;

@@ -68,6 +68,34 @@ TEST(HeldoutComparison, AMechanismAtItsOffValueGainsNothingWhateverItsStandardEr
   EXPECT_NEAR(r.heldout_gain, 0.0, 1e-12);
 }
 
+// At its off value within its error, but with the baseline's parameters moved (as a refit
+// leaves them): the predictions differ from the baseline's, yet the switch says nothing was
+// added, so the gain is zero; the ratio as computed is kept beside it.
+TEST(HeldoutComparison, AMechanismAtItsOffValueWithMovedBaselineParametersGainsNothing) {
+  Fixture f;
+  make(f);
+  const ModelFit baseline = judged_fit(f.set, {}, f.baseline_point, {}, f.options);
+  std::vector<double> moved = f.baseline_point;
+  moved[0] *= 0.8;  // friction
+  const ModelFit off = judged_fit(f.set, {Mechanism::vertical_excitation}, with(moved, {0.002}),
+                                  {0.0, 0.0, 0.0, 0.004}, f.options);
+  const CandidateScore s = score_candidate(f.set, Mechanism::vertical_excitation, off, baseline, f.options);
+  ASSERT_TRUE(s.at_off_value);
+  // The setup moves the held-out error: without the rule the gain would not be zero.
+  ASSERT_GT(std::abs(s.heldout_gain_as_fitted), 1e-3);
+  EXPECT_NE(s.heldout_error, s.reference_heldout_error);
+  EXPECT_EQ(s.heldout_gain, 0.0);
+  EXPECT_EQ(s.heldout_tests_improved, 0);
+  for (double g : s.measure_gain) EXPECT_EQ(g, 0.0);
+  EXPECT_FALSE(s.significant);
+  // Switched on beyond its error, the same parameters keep the ratio as their gain.
+  const ModelFit on = judged_fit(f.set, {Mechanism::vertical_excitation}, with(moved, {0.2}),
+                                 {0.0, 0.0, 0.0, 0.004}, f.options);
+  const CandidateScore t = score_candidate(f.set, Mechanism::vertical_excitation, on, baseline, f.options);
+  ASSERT_FALSE(t.at_off_value);
+  EXPECT_EQ(t.heldout_gain, t.heldout_gain_as_fitted);
+}
+
 TEST(HeldoutComparison, OffValueMeansTheSwitchWithinItsErrorNotAShapeParameter) {
   Fixture f;
   make(f);

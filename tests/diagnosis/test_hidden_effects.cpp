@@ -91,8 +91,10 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "diagnosis/diagnose.h"
+#include "diagnosis/report.h"
 #include "diagnosis/synthesize.h"
 #include "measured_set.h"  // tests/independent
 #include "support/temporary_files.h"
@@ -100,8 +102,10 @@
 namespace caskdem::diagnosis {
 namespace {
 
+// With `report`, diagnosis.json and report.md are written there too (no plots).
 Diagnosis diagnose_synthetic(const std::vector<Mechanism>& hidden, std::uint64_t seed, bool second_effect,
-                             const std::string& stated_rule = "gyration") {
+                             const std::string& stated_rule = "gyration",
+                             const std::filesystem::path& report = {}) {
   const testing::TestDirectory directory;
   SyntheticSpec spec;
   spec.hidden = hidden;
@@ -119,7 +123,9 @@ Diagnosis diagnose_synthetic(const std::vector<Mechanism>& hidden, std::uint64_t
   DiagnosisOptions options;
   options.threads = 2;
   options.look_for_second_effect = second_effect;
-  return diagnose(set, options);
+  Diagnosis d = diagnose(set, options);
+  if (!report.empty()) write_diagnosis(report, set, d, options.isa, false);
+  return d;
 }
 
 const CandidateScore& score_of(const Diagnosis& d, Mechanism m) {
@@ -179,13 +185,28 @@ TEST(HiddenEffect, AFloorLayerJustShortOfTheCriterionIsUnexplainedNotNone) {
   EXPECT_LT(layer.bic_delta, -10.0);
 }
 
+// Also: a mechanism at its off value is reported with no gain in diagnosis.json (its ratio as
+// fitted kept beside it); on these data most mechanisms end there.
 TEST(HiddenEffect, BaselineDataGiveNone) {
-  const Diagnosis d = diagnose_synthetic({}, 109, false);
+  const testing::TestDirectory report("report");
+  const Diagnosis d = diagnose_synthetic({}, 109, false, "gyration", report.path());
   RecordProperty("top_gain", std::to_string(d.ranking.front().heldout_gain));
   EXPECT_EQ(d.cause, "none") << "top: " << mechanism_name(d.ranking.front().mechanism) << " gain "
                              << d.ranking.front().heldout_gain;
   EXPECT_EQ(d.footprint, "gyration") << "the stated rule, which made the data, is kept";
   EXPECT_TRUE(d.baseline.adequacy.adequate) << "p " << d.baseline.adequacy.p_value;
+
+  std::ifstream in(report.path() / "diagnosis.json");
+  const nlohmann::json j = nlohmann::json::parse(in);
+  int off = 0;
+  for (const nlohmann::json& c : j.at("ranking")) {
+    if (!c.at("at_off_value").get<bool>()) continue;
+    ++off;
+    EXPECT_EQ(c.at("heldout_gain").get<double>(), 0.0) << c.at("mechanism");
+    EXPECT_FALSE(c.at("significant").get<bool>()) << c.at("mechanism");
+    ASSERT_TRUE(c.contains("heldout_gain_as_fitted")) << c.at("mechanism");
+  }
+  EXPECT_GT(off, 0) << "no mechanism at its off value: the check above checked nothing";
 }
 
 // The same kind of data with a specimen file that states the wrong two-corner rule: the

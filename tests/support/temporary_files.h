@@ -22,10 +22,11 @@ namespace caskdem::testing {
 // process id make the name unique.
 class TestDirectory {
  public:
-  TestDirectory() {
+  // `purpose` tells apart two directories of one test.
+  explicit TestDirectory(const std::string& purpose = "") {
     const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
     std::string name = "caskdem_" + std::string(info->test_suite_name()) + "_" + info->name() + "_" +
-                       std::to_string(::getpid());
+                       std::to_string(::getpid()) + (purpose.empty() ? "" : "_" + purpose);
     std::replace(name.begin(), name.end(), '/', '_');  // parameterised tests' names hold '/'
     path_ = std::filesystem::temp_directory_path() / name;
     std::filesystem::remove_all(path_);
