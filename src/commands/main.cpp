@@ -29,8 +29,11 @@ int main(int argc, char** argv) {
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
-    // --help and --version exit 0; a command line that does not parse is bad input, status 2.
-    return app.exit(e) == 0 ? 0 : 2;
+    // --help and --version are CLI11's successes; a command line that does not parse is bad
+    // input: one line, as every other input error, and status 2.
+    if (e.get_exit_code() == 0) return app.exit(e);
+    std::cerr << "caskdem: error: " << e.what() << " (--help says what each command expects)\n";
+    return 2;
   } catch (const caskdem::InputError& e) {
     std::cerr << "caskdem: error: " << e.what() << "\n";
     return 2;

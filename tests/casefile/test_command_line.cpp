@@ -5,6 +5,10 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
+#include <map>
+#include <regex>
+#include <sstream>
 #include <string>
 #include <vector>
 
@@ -259,6 +263,75 @@ TEST_F(CommandLine, PlottingAFileThatIsNotAnEnsembleResultSaysSo) {
   EXPECT_THAT(o.output, HasSubstr("notes.h5"));
   EXPECT_THAT(o.output, HasSubstr("expected a result file of caskdem ensemble"));
   EXPECT_THAT(o.output, ::testing::Not(HasSubstr("Traceback")));
+}
+
+// The README's promise, command by command: bad input ends with one line naming the file and
+// the line or key (or the option) and what was expected, status 2, and nothing written. The
+// commands are read from `caskdem --help`, so a new command without a case here fails.
+TEST_F(CommandLine, EveryCommandRefusesBadInputWithOneLineAndStatusTwo) {
+  const std::string source = CASKDEM_SOURCE_DIR;
+  const std::string bad_case = testing::file_text(source + "/cases/default-pulse.toml");
+  const auto case_file = write("case.toml", std::regex_replace(bad_case, std::regex("rounding = \"0.5 cm\""),
+                                                                "rounding = \"0.5 kg\""));
+  const std::string bad_line = ":11: key cask.rounding: unit \"kg\" is not a length unit";
+  const auto record = write("record.csv", "t, a\n0.00, 0.1\n0.01, x\n");
+  const std::string ensemble_text = testing::file_text(source + "/tests/ensemble/data/mixed-outcomes.toml");
+  const auto ensemble = write("ensemble.toml", std::regex_replace(ensemble_text, std::regex("settle_time = \"1 s\""),
+                                                                  "settle_time = \"1 kg\""));
+  const auto not_a_result = write("result.h5", "not HDF5\n");
+  const std::filesystem::path measured = dir_ / "measured";
+  ASSERT_EQ(run_caskdem("synthesize-measured --out " + measured.string()).status, 0);
+  const std::string specimen = testing::file_text(measured / "specimen.toml");
+  ASSERT_NE(specimen.find("starts = 6"), std::string::npos);
+  std::ofstream(measured / "specimen.toml") << std::regex_replace(specimen, std::regex("starts = 6"), "starts = six");
+  const auto bad_json = write("diagnosis.json", "{\"cause\": ");
+  const std::filesystem::path good = dir_ / "good";
+  ASSERT_EQ(run_caskdem("synthesize-measured --out " + good.string()).status, 0);
+
+  const std::string out = (dir_ / "out").string();
+  struct Case {
+    std::string arguments, message;
+  };
+  const std::map<std::string, Case> cases = {
+      {"run", {"run " + case_file.string() + " --out " + out, case_file.string() + bad_line}},
+      {"calibrate", {"calibrate " + case_file.string(), case_file.string() + bad_line}},
+      {"sweep", {"sweep " + case_file.string() + " --out " + out, case_file.string() + bad_line}},
+      {"motion", {"motion " + record.string() + " --unit g", record.string() + ":3: found 'x'"}},
+      {"similarity", {"similarity abc", "scale: expected a finite number above zero, got \"abc\""}},
+      {"ensemble", {"ensemble " + ensemble.string() + " --out " + out, ensemble.string() + ":28: key integration.settle_time"}},
+      {"plot", {"plot " + not_a_result.string(), not_a_result.string() + ": has no caskdem seal"}},
+      {"calibrate-measured",
+       {"calibrate-measured " + measured.string() + " --out " + out, (measured / "specimen.toml").string() + ":30:"}},
+      {"diagnose", {"diagnose " + measured.string() + " --out " + out, (measured / "specimen.toml").string() + ":30:"}},
+      {"evaluate-measured",
+       {"evaluate-measured " + good.string() + " --from " + bad_json.string() + " --json " + out, bad_json.string()}},
+      {"synthesize-measured", {"synthesize-measured --out " + out + " --effect nonsense", "--effect: unknown mechanism \"nonsense\""}},
+  };
+
+  const Outcome help = run_caskdem("--help");
+  ASSERT_EQ(help.status, 0);
+  std::istringstream lines(help.output.substr(help.output.find("Subcommands:")));
+  std::string line;
+  std::getline(lines, line);
+  int commands = 0;
+  while (std::getline(lines, line)) {
+    std::smatch command;
+    if (!std::regex_search(line, command, std::regex("^  ([a-z-]+) "))) continue;
+    ++commands;
+    const auto c = cases.find(command[1]);
+    ASSERT_NE(c, cases.end()) << "no bad-input case for the command " << command[1];
+    const Outcome o = testing::run_shell("timeout 120 " + std::string(CASKDEM_BINARY) + " " + c->second.arguments);
+    EXPECT_EQ(o.status, 2) << c->second.arguments << "\n" << o.output;
+    EXPECT_THAT(o.output, HasSubstr(c->second.message)) << c->second.arguments;
+    EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << "one line: " << o.output;
+    EXPECT_FALSE(std::filesystem::exists(out)) << c->second.arguments << ": wrote before refusing";
+  }
+  EXPECT_EQ(commands, static_cast<int>(cases.size())) << "--help lists every command with a case here";
+
+  // A command line that does not parse is one line too (CLI11 added a second).
+  const Outcome o = run_caskdem("run");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(std::count(o.output.begin(), o.output.end(), '\n'), 1) << o.output;
 }
 
 }  // namespace
