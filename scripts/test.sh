@@ -9,3 +9,7 @@ ctest --test-dir build --output-on-failure --no-tests=error -j"$(nproc)"
 # Every reader under libFuzzer with the address and undefined-behaviour sanitizers, 10 s per
 # target (bench/fuzz.sh; docs/fuzzing.md has the long runs).
 TIMEOUT=10 bench/fuzz.sh build-fuzz build-fuzz/smoke 1000000 10
+# The suite again under AddressSanitizer and UndefinedBehaviorSanitizer, and the ensemble tests
+# under ThreadSanitizer (scripts/sanitize.sh; docs/fuzzing.md, "Sanitizer builds").
+scripts/sanitize.sh address
+scripts/sanitize.sh thread
