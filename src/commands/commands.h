@@ -14,6 +14,7 @@ void add_ensemble(CLI::App& app);
 void add_plot(CLI::App& app);
 void add_diagnose(CLI::App& app);
 void add_evaluate_measured(CLI::App& app);
+void add_risk(CLI::App& app);
 
 }  // namespace caskdem::commands
 

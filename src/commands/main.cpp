@@ -26,6 +26,7 @@ int main(int argc, char** argv) {
   caskdem::commands::add_plot(app);
   caskdem::commands::add_diagnose(app);
   caskdem::commands::add_evaluate_measured(app);
+  caskdem::commands::add_risk(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {

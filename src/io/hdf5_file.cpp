@@ -67,6 +67,16 @@ Group Group::open_group(const std::string& name) const {
 
 bool Group::has(const std::string& name) const { return H5Lexists(id(), name.c_str(), H5P_DEFAULT) > 0; }
 
+std::vector<std::string> Group::member_names() const {
+  std::vector<std::string> names;
+  const auto collect = [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t {
+    static_cast<std::vector<std::string>*>(data)->emplace_back(name);
+    return 0;
+  };
+  if (H5Literate(id(), H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names) < 0) fail("cannot list the members");
+  return names;
+}
+
 void Group::write(const std::string& name, const std::vector<double>& values, const std::string& units) {
   write_matrix(name, values, values.size(), 1, units);
 }

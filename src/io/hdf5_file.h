@@ -39,6 +39,7 @@ class Group {
   Group group(const std::string& name);         // creates
   Group open_group(const std::string& name) const;
   bool has(const std::string& name) const;
+  std::vector<std::string> member_names() const;  // groups and datasets, in name order
 
   void write(const std::string& name, const std::vector<double>& values, const std::string& units = "");
   void write(const std::string& name, const std::vector<std::int64_t>& values);

@@ -285,6 +285,7 @@ TEST_F(CommandLine, EveryCommandRefusesBadInputWithOneLineAndStatusTwo) {
   ASSERT_NE(specimen.find("starts = 6"), std::string::npos);
   std::ofstream(measured / "specimen.toml") << std::regex_replace(specimen, std::regex("starts = 6"), "starts = six");
   const auto bad_json = write("diagnosis.json", "{\"cause\": ");
+  const auto hazard = write("hazard.csv", "PGA [g], annual frequency\n0.1, 1e-3\n0.2, 2e-3\n");
   const std::filesystem::path good = dir_ / "good";
   ASSERT_EQ(run_caskdem("synthesize-measured --out " + good.string()).status, 0);
 
@@ -306,6 +307,8 @@ TEST_F(CommandLine, EveryCommandRefusesBadInputWithOneLineAndStatusTwo) {
       {"evaluate-measured",
        {"evaluate-measured " + good.string() + " --from " + bad_json.string() + " --json " + out, bad_json.string()}},
       {"synthesize-measured", {"synthesize-measured --out " + out + " --effect nonsense", "--effect: unknown mechanism \"nonsense\""}},
+      {"risk", {"risk --hazard " + hazard.string() + " --median \"0.9 g\" --beta 0.4 --json " + out,
+                hazard.string() + ":3: the hazard rises from 0.001 to 0.002 per year"}},
   };
 
   const Outcome help = run_caskdem("--help");

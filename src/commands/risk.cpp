@@ -1,0 +1,259 @@
+// caskdem risk [RESULT.h5] --hazard FILE: the annual frequency of each limit state at a site,
+// the fragility (an ensemble's fitted curves, or a median and betas given) convolved with the
+// site's hazard curve (risk/annual_frequency.h), with HCLPF, the probability in N years, the
+// ratio to a target and the intensities that contribute; a JSON and a PNG beside.
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <iostream>
+
+#include <nlohmann/json.hpp>
+
+#include "commands/commands.h"
+#include "commands/validators.h"
+#include "core/error.h"
+#include "core/quantity.h"
+#include "core/text.h"
+#include "core/units.h"
+#include "ensemble/results.h"
+#include "io/hdf5_file.h"
+#include "io/output_paths.h"
+#include "io/run_output.h"
+#include "risk/annual_frequency.h"
+#include "risk/hazard_curve.h"
+
+namespace caskdem::commands {
+
+namespace {
+
+using risk::IntensityMeasure;
+
+struct NamedFragility {
+  std::string name;
+  risk::LognormalFragility fragility;
+};
+
+struct RiskOptions {
+  std::string result, hazard, format = "automatic", imt, site, median, design_basis, json, plot;
+  double beta = 0.0, beta_r = 0.0, beta_u = 0.0, years = 50.0, target = 1e-5;
+  bool no_plot = false;
+};
+
+// "0.9 g" (or a bare SI number) in the dimension of the hazard's measure.
+double intensity_option(const std::string& option, const std::string& text, const IntensityMeasure& measure) {
+  std::string error;
+  const auto value = parse_quantity(text, measure.is_acceleration() ? Dimension::acceleration : Dimension::velocity, error);
+  if (!value || !std::isfinite(*value) || *value <= 0.0)
+    throw InputError(option + ": \"" + text + "\"; expected " + (measure.is_acceleration() ? "an acceleration" : "a velocity") +
+                     " above 0 such as \"" + (measure.is_acceleration() ? "0.9 g" : "80 cm/s") + "\" for a hazard of " +
+                     intensity_measure_name(measure) + (error.empty() ? "" : " (" + error + ")"));
+  return *value;
+}
+
+// The fitted lognormal of each limit state of an ensemble result, in the SI unit of PGA or PGV.
+// Limit states without a fitted curve are noted in `notes`, printed once every input is read.
+std::vector<NamedFragility> fragilities_of_result(const std::string& file, const IntensityMeasure& hazard_measure,
+                                                  const std::string& hazard_file, double beta_u,
+                                                  std::vector<std::string>& notes) {
+  std::vector<NamedFragility> out;
+  try {
+    verify_ensemble_file(file);
+    const hdf5::Group root = hdf5::open_file(file);
+    if (!root.has("limit_states"))
+      throw InputError(located(file, 0, "has no limit_states group; expected the result file of a completed ensemble"));
+    const std::string measure = root.string_attribute("intensity_measure");
+    // Ratios to the uplift threshold g tan(alpha) (and p for PGV) convert to PGA and PGV.
+    const double uplift = units::standard_gravity * std::tan(root.double_attribute("stability_angle_rad"));
+    IntensityMeasure im{IntensityMeasure::Kind::pga, 0.0};
+    double to_si = 1.0;
+    if (measure == "pga_ratio") to_si = uplift;
+    if (measure == "pgv" || measure == "pgv_ratio") im.kind = IntensityMeasure::Kind::pgv;
+    if (measure == "pgv_ratio") to_si = uplift / root.double_attribute("frequency_parameter_rad_s");
+    if (!(im == hazard_measure))
+      throw InputError(located(file, 0, "its fragility curves are of " + intensity_measure_name(im) + " but the hazard curve " +
+                                            hazard_file + " is of " + intensity_measure_name(hazard_measure) +
+                                            "; expected a hazard curve of " + intensity_measure_name(im)));
+    const hdf5::Group all = root.open_group("limit_states");
+    for (const std::string& name : all.member_names()) {
+      const hdf5::Group g = all.open_group(name);
+      if (g.integer_attribute("fitted") == 0) {
+        notes.push_back("fragility  " + name + ": not fitted (" + g.string_attribute("not_fitted_because") +
+                        "), no annual frequency");
+        continue;
+      }
+      out.push_back({name, {g.double_attribute("median") * to_si, g.double_attribute("log_std"), beta_u}});
+    }
+  } catch (const InputError&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    throw InputError(located(file, 0, std::string(e.what()) + "; expected a result file of caskdem ensemble"));
+  }
+  if (out.empty()) throw InputError(located(file, 0, "has no fitted fragility curve; expected at least one"));
+  return out;
+}
+
+std::string intensity_text(double si, const IntensityMeasure& m) {
+  return number_text(si / risk::display_unit_to_si(m)) + " " + risk::display_unit(m);
+}
+
+void run_risk(const RiskOptions& o, bool beta_given, bool beta_r_given, bool beta_u_given) {
+  risk::HazardReadOptions read;
+  const auto format = risk::parse_hazard_format(o.format);
+  if (!format) throw InputError("--hazard-format: \"" + o.format + "\"; expected automatic, openquake, nshmp or table");
+  read.format = *format;
+  if (!o.imt.empty()) {
+    read.measure = risk::parse_intensity_measure(o.imt);
+    if (!read.measure) throw InputError("--imt: \"" + o.imt + "\"; expected PGA, PGV or SA(T) with T in s");
+  }
+  if (!o.site.empty()) {
+    const auto comma = o.site.find(',');
+    const auto lon = parse_double(trim(std::string_view(o.site).substr(0, comma)));
+    const auto lat = comma == std::string::npos ? std::nullopt : parse_double(trim(std::string_view(o.site).substr(comma + 1)));
+    if (!lon || !lat || !std::isfinite(*lon) || !std::isfinite(*lat))
+      throw InputError("--site: \"" + o.site + "\"; expected LON,LAT in degrees");
+    read.site = std::pair{*lon, *lat};
+  }
+  const risk::HazardCurve hazard = risk::read_hazard_curve(o.hazard, read);
+  const IntensityMeasure& im = hazard.measure;
+
+  std::vector<NamedFragility> fragilities;
+  std::vector<std::string> notes;
+  if (!o.result.empty()) {
+    if (!o.median.empty() || beta_given || beta_r_given)
+      throw InputError("--median, --beta and --beta-r: give a fragility either by its parameters or by a result file, not both");
+    fragilities = fragilities_of_result(o.result, im, o.hazard, o.beta_u, notes);
+  } else {
+    if (o.median.empty() || (!beta_given && !beta_r_given))
+      throw InputError("risk: expected a result file, or --median with --beta (or --beta-r and --beta-u)");
+    if (beta_given && (beta_r_given || beta_u_given))
+      throw InputError("--beta: give either --beta (aleatory alone) or --beta-r with --beta-u, not both");
+    fragilities.push_back({"given", {intensity_option("--median", o.median, im), beta_given ? o.beta : o.beta_r, o.beta_u}});
+    try {
+      risk::check_fragility(fragilities.back().fragility);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(std::string(beta_given ? "--beta" : "--beta-r and --beta-u") + ": " + e.what());
+    }
+  }
+  const double design_basis = o.design_basis.empty() ? 0.0 : intensity_option("--design-basis", o.design_basis, im);
+
+  // Every answer before any line is printed, so that a refusal is the only line.
+  std::vector<risk::SiteRisk> risks;
+  for (const NamedFragility& f : fragilities) {
+    try {
+      risks.push_back(risk::site_risk(hazard, f.fragility));
+    } catch (const std::invalid_argument& e) {
+      throw InputError(located(o.hazard, 0, f.name + ": " + e.what()));
+    }
+  }
+  std::filesystem::path json = o.json, png = o.plot;
+  if (!o.result.empty()) {
+    const std::filesystem::path stem = std::filesystem::path(o.result).replace_extension("");
+    if (json.empty()) json = stem.string() + "-risk.json";
+    if (png.empty() && !o.no_plot) png = stem.string() + "-risk.png";
+  }
+  if (!png.empty() && o.no_plot) png.clear();
+  if (!png.empty() && json.empty()) json = std::filesystem::path(png).replace_extension(".json");
+  if (!json.empty()) prepare_output_file(json);
+  if (!png.empty()) prepare_output_file(png);
+
+  std::cout << "hazard     " << hazard.source << ": " << intensity_measure_name(im) << ", " << hazard.intensity.size()
+            << " points from " << intensity_text(hazard.intensity.front(), im) << " to "
+            << intensity_text(hazard.intensity.back(), im) << "\n";
+  nlohmann::json report;
+  report["hazard"] = {{"source", hazard.source},
+                      {"measure", intensity_measure_name(im)},
+                      {"unit", risk::display_unit(im)},
+                      {"annual_frequency", hazard.annual_frequency}};
+  std::vector<double> shown;
+  for (double a : hazard.intensity) shown.push_back(a / risk::display_unit_to_si(im));
+  report["hazard"]["intensity"] = shown;
+  report["years"] = o.years;
+  report["target_annual_frequency"] = o.target;
+  if (design_basis > 0.0) report["design_basis"] = design_basis / risk::display_unit_to_si(im);
+  report["limit_states"] = nlohmann::json::array();
+
+  for (const std::string& note : notes) std::cout << note << "\n";
+  std::cout << std::setprecision(3);
+  for (std::size_t k = 0; k < fragilities.size(); ++k) {
+    const NamedFragility& f = fragilities[k];
+    const risk::SiteRisk& r = risks[k];
+    const double unit = risk::display_unit_to_si(im);
+    const risk::FrequencyIntegral& mean = r.mean_integral;
+    std::cout << "fragility  " << f.name << ": median " << intensity_text(f.fragility.median, im) << ", beta_R "
+              << f.fragility.beta_r << ", beta_U " << f.fragility.beta_u << " (beta_C " << f.fragility.beta_c() << ")\n";
+    std::cout << "  annual frequency  mean " << r.mean << " /yr; median " << r.median << ", 5 % " << r.fractile_05
+              << ", 95 % " << r.fractile_95 << "\n";
+    std::cout << "  in " << o.years << " years       " << risk::probability_in_years(r.mean, o.years) << " (mean)\n";
+    std::cout << "  against target    " << r.mean / o.target << " x " << o.target << " /yr\n";
+    std::cout << "  HCLPF             " << intensity_text(r.hclpf_conservative, im) << " (A_m exp(-1.645 (beta_R + beta_U))), "
+              << intensity_text(r.hclpf_composite, im) << " (1 % of the composite curve)";
+    if (design_basis > 0.0) std::cout << "; " << r.hclpf_conservative / design_basis << " x the design basis";
+    std::cout << "\n";
+    // The segment that contributes most, and the share beyond the curve's ends.
+    std::size_t modal = 0;
+    for (std::size_t i = 0; i < mean.segment_frequency.size(); ++i)
+      if (mean.segment_frequency[i] > mean.segment_frequency[modal]) modal = i;
+    std::cout << "  contributes most  " << intensity_text(hazard.intensity[modal], im) << " to "
+              << intensity_text(hazard.intensity[modal + 1], im) << " ("
+              << 100.0 * mean.segment_frequency[modal] / r.mean << " %); beyond the curve "
+              << 100.0 * (mean.below_curve + mean.above_curve) / r.mean << " %\n";
+    nlohmann::json j = {{"name", f.name},
+                        {"median", f.fragility.median / unit},
+                        {"beta_r", f.fragility.beta_r},
+                        {"beta_u", f.fragility.beta_u},
+                        {"beta_c", f.fragility.beta_c()},
+                        {"mean_annual_frequency", r.mean},
+                        {"median_annual_frequency", r.median},
+                        {"fractile_05_annual_frequency", r.fractile_05},
+                        {"fractile_95_annual_frequency", r.fractile_95},
+                        {"probability_in_years", risk::probability_in_years(r.mean, o.years)},
+                        {"ratio_to_target", r.mean / o.target},
+                        {"hclpf_conservative", r.hclpf_conservative / unit},
+                        {"hclpf_composite", r.hclpf_composite / unit},
+                        {"below_curve", mean.below_curve},
+                        {"above_curve", mean.above_curve},
+                        {"undetermined_above", mean.undetermined_above},
+                        {"quadrature_error", mean.error_estimate},
+                        {"segment_annual_frequency", mean.segment_frequency}};
+    if (design_basis > 0.0) j["hclpf_to_design_basis"] = r.hclpf_conservative / design_basis;
+    report["limit_states"].push_back(j);
+  }
+
+  if (!json.empty()) {
+    std::ofstream(json) << report.dump(2) << "\n";
+    std::cout << "wrote " << json.string() << "\n";
+  }
+  if (!png.empty()) {
+    run_plot_script("plot_risk.py", {json.string(), png.string()});
+    std::cout << "wrote " << png.string() << "\n";
+  }
+}
+
+}  // namespace
+
+void add_risk(CLI::App& app) {
+  auto o = std::make_shared<RiskOptions>();
+  CLI::App* cmd = app.add_subcommand(
+      "risk", "Annual frequency of each limit state at a site: fragility x hazard curve, with HCLPF and fractiles");
+  cmd->add_option("result", o->result, "Ensemble result file (HDF5) whose fitted fragility curves to use");
+  cmd->add_option("--hazard", o->hazard, "Hazard curve: OpenQuake or nshmp-haz CSV, or a table")->required();
+  cmd->add_option("--hazard-format", o->format, "automatic, openquake, nshmp or table");
+  cmd->add_option("--imt", o->imt, "Intensity measure of a hazard file that does not say it: PGA, PGV or SA(T)");
+  cmd->add_option("--site", o->site, "LON,LAT of the site in a hazard file of several");
+  cmd->add_option("--median", o->median, "Median capacity of a given fragility, e.g. \"0.9 g\"");
+  auto* beta = cmd->add_option("--beta", o->beta, "Its log standard deviation (aleatory)")->check(positive_number());
+  auto* beta_r = cmd->add_option("--beta-r", o->beta_r, "Aleatory log standard deviation beta_R")->check(positive_number());
+  auto* beta_u = cmd->add_option("--beta-u", o->beta_u, "Epistemic log standard deviation beta_U (default 0)")
+                     ->check(non_negative_number());
+  cmd->add_option("--years", o->years, "Years for the probability of exceedance (default 50)")->check(positive_number());
+  cmd->add_option("--target", o->target, "Target annual frequency (default 1e-5, ASCE 43 SDC-5)")->check(positive_number());
+  cmd->add_option("--design-basis", o->design_basis, "Design-basis intensity, e.g. \"0.3 g\": HCLPF against it");
+  cmd->add_option("--json", o->json, "JSON file of the numbers (default beside a result file)");
+  cmd->add_option("--plot", o->plot, "PNG of the hazard, the fragility family and the contributions");
+  cmd->add_flag("--no-plot", o->no_plot, "Write no PNG");
+  cmd->callback([o, beta, beta_r, beta_u]() { run_risk(*o, beta->count() > 0, beta_r->count() > 0, beta_u->count() > 0); });
+}
+
+}  // namespace caskdem::commands

@@ -1,0 +1,171 @@
+#include "risk/annual_frequency.h"
+
+#include <algorithm>
+#include <cmath>
+#include <stdexcept>
+
+#include <boost/math/distributions/normal.hpp>
+#include <boost/math/quadrature/gauss_kronrod.hpp>
+
+#include "core/text.h"
+
+namespace caskdem::risk {
+
+namespace {
+
+constexpr double kCoverage = 0.01;          // the part beyond the curve allowed, of the answer
+constexpr double kRelativeTolerance = 1e-10;
+constexpr double kHclpfZ = 1.6448536269514722;     // Phi^-1(0.95)
+constexpr double kOnePercentZ = 2.3263478740408408;  // Phi^-1(0.99)
+
+double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
+
+double integrate(const auto& f, double from, double to, double& error) {
+  double e = 0.0;
+  const double value = boost::math::quadrature::gauss_kronrod<double, 31>::integrate(f, from, to, 12, kRelativeTolerance, &e);
+  error += e;
+  return value;
+}
+
+// The hazard as power laws in x = ln a: on segment i (and continued beyond the ends),
+// H(x) = H_i exp(-k_i (x - x_i)).
+struct LogLogHazard {
+  std::vector<double> x, log_h, slope;  // slope[i]: k on [x_i, x_i+1]
+  explicit LogLogHazard(const HazardCurve& curve) {
+    for (std::size_t i = 0; i < curve.intensity.size(); ++i) {
+      x.push_back(std::log(curve.intensity[i]));
+      log_h.push_back(std::log(curve.annual_frequency[i]));
+    }
+    for (std::size_t i = 0; i + 1 < x.size(); ++i) slope.push_back(-(log_h[i + 1] - log_h[i]) / (x[i + 1] - x[i]));
+  }
+  std::size_t last() const { return x.size() - 1; }
+  // |dH/dx| at x on the power law of segment i (i = last: the last segment continued).
+  double density(std::size_t i, double at) const {
+    const std::size_t s = std::min(i, slope.size() - 1);
+    const double k = slope[s];
+    return k * std::exp(log_h[i] - k * (at - x[i]));
+  }
+};
+
+// Continued below the first point down to where the fragility has no weight left.
+double lower_limit(const LogLogHazard& h, double log_median, double beta) {
+  return std::min(h.x.front(), log_median - (12.0 + h.slope.front() * beta) * beta);
+}
+
+double part_below(const LogLogHazard& h, double log_median, double beta, double down_to_x, double& error) {
+  const auto f = [&](double x) { return normal_cdf((x - log_median) / beta) * h.density(0, x); };
+  const double from = lower_limit(h, log_median, beta);
+  return down_to_x > from ? integrate(f, from, down_to_x, error) : 0.0;
+}
+
+}  // namespace
+
+double LognormalFragility::beta_c() const { return std::sqrt(beta_r * beta_r + beta_u * beta_u); }
+
+double LognormalFragility::probability(double intensity, double confidence) const {
+  if (intensity <= 0.0) return 0.0;
+  if (confidence == 0.0) return normal_cdf(std::log(intensity / median) / beta_c());
+  const double z = boost::math::quantile(boost::math::normal(), confidence);
+  return normal_cdf((std::log(intensity / median) + beta_u * z) / beta_r);
+}
+
+void check_fragility(const LognormalFragility& f) {
+  if (!std::isfinite(f.median) || f.median <= 0.0) throw std::invalid_argument("the fragility's median must be above 0");
+  if (!(f.beta_r > 0.0 && f.beta_r <= 5.0)) throw std::invalid_argument("beta_R must be in (0, 5]");
+  if (!(f.beta_u >= 0.0 && f.beta_u <= 5.0)) throw std::invalid_argument("beta_U must be in [0, 5]");
+}
+
+double hclpf_conservative(const LognormalFragility& f) { return f.median * std::exp(-kHclpfZ * (f.beta_r + f.beta_u)); }
+double hclpf_composite(const LognormalFragility& f) { return f.median * std::exp(-kOnePercentZ * f.beta_c()); }
+
+FrequencyIntegral convolve(const HazardCurve& hazard, double median, double beta) {
+  check_hazard_curve(hazard);
+  if (!std::isfinite(median) || median <= 0.0 || !(beta > 0.0) || !std::isfinite(beta))
+    throw std::invalid_argument("a fragility needs a median above 0 and a log standard deviation above 0");
+  const LogLogHazard h(hazard);
+  const double m = std::log(median);
+  const auto fragility = [&](double x) { return normal_cdf((x - m) / beta); };
+  FrequencyIntegral result;
+  double error = 0.0;
+  result.below_curve = part_below(h, m, beta, h.x.front(), error);
+  for (std::size_t i = 0; i + 1 < h.x.size(); ++i) {
+    const auto f = [&](double x) { return fragility(x) * h.density(i, x); };
+    result.segment_frequency.push_back(integrate(f, h.x[i], h.x[i + 1], error));
+  }
+  // Above the last point the last power law, to where it has fallen by e^-50 (or, flat, adds nothing).
+  const std::size_t n = h.last();
+  const double k = h.slope.back();
+  if (k > 0.0) {
+    const auto f = [&](double x) { return fragility(x) * h.density(n, x); };
+    result.above_curve = integrate(f, h.x[n], h.x[n] + 50.0 / k, error);
+  }
+  result.undetermined_above = hazard.annual_frequency.back() * (1.0 - fragility(h.x[n]));
+  result.annual_frequency = result.below_curve + result.above_curve;
+  for (double s : result.segment_frequency) result.annual_frequency += s;
+  result.error_estimate = error;
+  return result;
+}
+
+namespace {
+
+// Refuses a curve whose ends leave more than kCoverage of `integral` unsettled, saying about
+// where it would have to reach.
+void check_coverage(const HazardCurve& hazard, double median, double beta, const FrequencyIntegral& integral,
+                    const std::string& which) {
+  const LogLogHazard h(hazard);
+  const double total = integral.annual_frequency, m = std::log(median);
+  const std::string unit = display_unit(hazard.measure);
+  const double to_unit = 1.0 / display_unit_to_si(hazard.measure);
+  if (integral.undetermined_above > kCoverage * total) {
+    // Where the continued curve would leave less than kCoverage unsettled.
+    double x = h.x.back();
+    for (int j = 0; j < 2000; ++j, x += 0.01) {
+      const double rest = std::exp(h.log_h.back() - h.slope.back() * (x - h.x.back())) * (1.0 - normal_cdf((x - m) / beta));
+      if (rest <= kCoverage * total) break;
+    }
+    throw std::invalid_argument(
+        "the hazard curve ends at " + number_text(hazard.intensity.back() * to_unit) + " " + unit + ", where the " + which +
+        " fragility is " + number_text(normal_cdf((h.x.back() - m) / beta)) + ": the part above it that no curve can " +
+        "settle, up to " + number_text(integral.undetermined_above) + " per year, is " +
+        number_text(100.0 * integral.undetermined_above / total) + " % of the annual frequency; expected a curve reaching " +
+        "about " + number_text(std::exp(x) * to_unit) + " " + unit + " or beyond (1 % unsettled)");
+  }
+  if (integral.below_curve > kCoverage * total) {
+    double x = h.x.front(), error = 0.0;
+    for (int j = 0; j < 2000; ++j, x -= 0.01) {
+      if (part_below(h, m, beta, x, error) <= kCoverage * total) break;
+    }
+    throw std::invalid_argument(
+        "the hazard curve starts at " + number_text(hazard.intensity.front() * to_unit) + " " + unit + ", where the " +
+        which + " fragility is already " + number_text(normal_cdf((h.x.front() - m) / beta)) +
+        ": the part below it (the first segment continued) is " + number_text(100.0 * integral.below_curve / total) +
+        " % of the annual frequency; expected a curve starting at about " + number_text(std::exp(x) * to_unit) + " " +
+        unit + " or below (1 % continued)");
+  }
+}
+
+}  // namespace
+
+SiteRisk site_risk(const HazardCurve& hazard, const LognormalFragility& fragility) {
+  check_fragility(fragility);
+  SiteRisk risk;
+  risk.fragility = fragility;
+  risk.mean_integral = convolve(hazard, fragility.median, fragility.beta_c());
+  check_coverage(hazard, fragility.median, fragility.beta_c(), risk.mean_integral, "mean");
+  risk.mean = risk.mean_integral.annual_frequency;
+  // The family's members: median A_m exp(beta_U z), the q fractile at z = Phi^-1(1 - q).
+  const auto member = [&](double z, const char* which) {
+    const double median = fragility.median * std::exp(fragility.beta_u * z);
+    const FrequencyIntegral integral = convolve(hazard, median, fragility.beta_r);
+    check_coverage(hazard, median, fragility.beta_r, integral, which);
+    return integral.annual_frequency;
+  };
+  risk.median = member(0.0, "median");
+  risk.fractile_95 = fragility.beta_u > 0.0 ? member(-kHclpfZ, "95 % fractile") : risk.median;
+  risk.fractile_05 = fragility.beta_u > 0.0 ? member(kHclpfZ, "5 % fractile") : risk.median;
+  risk.hclpf_conservative = hclpf_conservative(fragility);
+  risk.hclpf_composite = hclpf_composite(fragility);
+  return risk;
+}
+
+}  // namespace caskdem::risk
