@@ -18,7 +18,7 @@ build=${1:-build-fuzz}
 out=${2:-fuzz-out}
 runs=${3:-1000000}
 seconds=${4:-3600}
-targets=${5:-"record case ensemble measured_test specimen result_file"}
+targets=${5:-"record case ensemble measured_test specimen result_file hazard_curve"}
 shared=${CASKDEM_SHARED:-../shared}
 
 compiler=$(command -v clang++-15 || command -v clang++ || true)
@@ -52,6 +52,7 @@ PY
 [ ! -d "$seeds/ensemble" ] || cp ensembles/*.toml tests/ensemble/data/*.toml "$seeds/ensemble/"
 [ ! -d "$seeds/measured_test" ] || cp fuzz/data/measured/*.csv "$seeds/measured_test/"
 [ ! -d "$seeds/specimen" ] || cp fuzz/seeds/specimen.toml "$seeds/specimen/"
+[ ! -d "$seeds/hazard_curve" ] || cp hazard/*.csv hazard/PGA/*.csv "$seeds/hazard_curve/"
 if [ -d "$seeds/result_file" ]; then
   "$build/src/caskdem" ensemble tests/ensemble/data/mixed-outcomes.toml --out "$seeds/result_file/mixed.h5" \
     --threads 1 --quiet --no-plot >/dev/null
