@@ -69,8 +69,10 @@ void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const
   const EnsemblePlan plan(spec, isa);
   if (root) {
     std::cout << "ensemble        " << spec.title << "\n";
-    std::cout << "realisations    " << plan.size() << " (" << spec.levels.size() << " stripes x "
-              << spec.realisations_per_stripe << ", " << plan.motion_count() << " motions)\n";
+    std::cout << "realisations    " << plan.size() << " ("
+              << (spec.outer_count() > 1 ? std::to_string(spec.outer_count()) + " epistemic outer points x " : "")
+              << spec.levels.size() << " stripes x " << spec.realisations_per_stripe << ", " << plan.motion_count()
+              << " motions)\n";
     std::cout << "time step       " << plan.model().time_step << " s, alpha " << plan.stability_angle() << " rad\n";
 #ifdef CASKDEM_WITH_MPI
     if (mpi) std::cout << "MPI             " << mpi->size() << " ranks\n";
@@ -98,6 +100,18 @@ void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const
                 << " (max misfit " << s.misfit.max_abs_difference << ", chi-square p " << s.misfit.p_value << ")\n";
     } else {
       std::cout << "no curve: " << s.fit.reason << "\n";
+    }
+    if (spec.outer_count() > 1) {
+      const fragility::NestedFit& n = s.nested;
+      std::cout << std::setw(20) << "  family";
+      if (n.fitted) {
+        std::cout << "A_m " << format_level(spec.measure, n.median) << " [" << format_level(spec.measure, n.median_low)
+                  << ", " << format_level(spec.measure, n.median_high) << "], beta_R " << n.beta_r << " ["
+                  << n.beta_r_low << ", " << n.beta_r_high << "], beta_U " << n.beta_u << " [" << n.beta_u_low << ", "
+                  << n.beta_u_high << "] (" << 100.0 * n.confidence << " %, " << n.outer_points << " outer points)\n";
+      } else {
+        std::cout << "no family: " << n.reason << "\n";
+      }
     }
   }
   std::cout << "wrote           " << out.string() << "\n";

@@ -83,6 +83,18 @@ std::vector<NamedFragility> fragilities_of_result(const std::string& file, const
                         "), no annual frequency");
         continue;
       }
+      // An ensemble with epistemic parameters has the family's A_m, beta_R and beta_U.
+      if (g.has("epistemic")) {
+        const hdf5::Group e = g.open_group("epistemic");
+        if (e.integer_attribute("fitted") != 0) {
+          if (beta_u > 0.0)
+            throw InputError("--beta-u: " + file + " separates beta_U already (its ensemble has epistemic parameters)");
+          out.push_back({name, {e.double_attribute("median") * to_si, e.double_attribute("beta_r"), e.double_attribute("beta_u")}});
+          continue;
+        }
+        notes.push_back("fragility  " + name + ": no epistemic family (" + e.string_attribute("not_fitted_because") +
+                        "); the pooled curve, taken as aleatory");
+      }
       out.push_back({name, {g.double_attribute("median") * to_si, g.double_attribute("log_std"), beta_u}});
     }
   } catch (const InputError&) {

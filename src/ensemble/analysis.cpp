@@ -54,6 +54,18 @@ std::vector<LimitStateSummary> analyse(const EnsemblePlan& plan, const EnsembleR
       s.band = fragility::bootstrap_band(data, grid, spec.bootstrap_replicates, spec.confidence, spec.seed + 7919 * (l + 1));
       s.misfit = fragility::misfit(s.fit, s.stripes);
     }
+    if (spec.outer_count() > 1) {
+      std::vector<std::vector<std::int64_t>> outer_trials(spec.outer_count(), std::vector<std::int64_t>(stripes, 0));
+      std::vector<std::vector<std::int64_t>> outer_counts = outer_trials;
+      for (std::int64_t i = 0; i < r.size; ++i) {
+        if (!r.completed[i] || static_cast<LaneStatus>(r.status[i]) == LaneStatus::non_finite) continue;
+        const int o = plan.outer_of(i);
+        ++outer_trials[o][r.stripe[i]];
+        if (exceeds(limit_state, r, i)) ++outer_counts[o][r.stripe[i]];
+      }
+      s.nested = fragility::fit_nested(spec.levels, outer_trials, outer_counts, spec.confidence,
+                                       spec.seed + 104729 * (l + 1));
+    }
     summaries.push_back(std::move(s));
   }
   return summaries;

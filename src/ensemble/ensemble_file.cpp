@@ -106,9 +106,9 @@ const KeySchema& ensemble_file_keys() {
     motions.keys.push_back("name");
     s.push_back(motions);
     s.push_back({"uncertain", uncertain_parameter_names()});
-    s.push_back({"uncertain.*", {"distribution", "value", "low", "high", "mean", "std", "median", "log_std"}});
+    s.push_back({"uncertain.*", {"distribution", "kind", "value", "low", "high", "mean", "std", "median", "log_std"}});
     s.push_back({"intensity", {"measure", "levels", "realisations"}});
-    s.push_back({"sampling", {"method", "seed"}});
+    s.push_back({"sampling", {"method", "seed", "epistemic_points"}});
     s.push_back({"limit_states", {"tip_over", "rotation_ratio", "sliding"}});
     s.push_back({"fragility", {"bootstrap", "confidence"}});
     s.push_back({"run", {"block_lanes", "checkpoint_interval"}});
@@ -184,6 +184,7 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
       if (!t.has(name)) continue;
       if (!t.has_table(name)) t.fail(name, "expected a table { distribution = \"...\", ... }");
       TableReader p = t.table(name);
+      if (p.choice("kind", {"aleatory", "epistemic"}, "aleatory") == "epistemic") e.epistemic.insert(name);
       e.uncertain[name] = read_distribution(p, name);
     }
     t.reject_unknown_keys();
@@ -253,8 +254,18 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
     const long seed = t.optional_integer("seed").value_or(1);
     if (seed < 0) t.fail("seed", "expected a non-negative whole number");
     e.seed = static_cast<std::uint64_t>(seed);
+    if (auto points = t.optional_integer("epistemic_points")) {
+      if (e.epistemic.empty()) t.fail("epistemic_points", "no [uncertain] parameter has kind = \"epistemic\"");
+      if (*points < 3 || *points > 10000) t.fail("epistemic_points", "expected 3 to 10000 outer points");
+      e.epistemic_points = static_cast<int>(*points);
+    }
     t.reject_unknown_keys();
   }
+  if (static_cast<double>(e.realisation_count()) > double(kMostRealisations))
+    throw InputError(located(file, 0, "key sampling.epistemic_points: expected at most " +
+                                          std::to_string(kMostRealisations) + " realisations in all (" +
+                                          std::to_string(e.outer_count()) + " outer points of " +
+                                          std::to_string(e.realisations_per_outer_point()) + ")"));
 
   {
     TableReader t = root.table("limit_states");

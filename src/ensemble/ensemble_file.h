@@ -9,6 +9,7 @@
 #include <filesystem>
 #include <map>
 #include <optional>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -49,6 +50,10 @@ struct EnsembleSpec {
   std::vector<MotionSpec> motions;
   std::vector<std::string> motion_names;
   std::map<std::string, Distribution> uncertain;  // by name, among uncertain_parameter_names()
+  // Those of `uncertain` that are epistemic (fixed for this cask but unknown): sampled once per
+  // outer point, each outer point running every stripe (docs/ensemble-file.md).
+  std::set<std::string> epistemic;
+  int epistemic_points = 30;
   IntensityMeasure measure = IntensityMeasure::pga;
   std::vector<double> levels;                     // SI (or dimensionless), increasing
   std::int64_t realisations_per_stripe = 0;
@@ -60,7 +65,11 @@ struct EnsembleSpec {
   int block_lanes = 64;
   double checkpoint_interval = 10.0;  // s of wall time between checkpoints
 
-  std::int64_t realisation_count() const { return realisations_per_stripe * static_cast<std::int64_t>(levels.size()); }
+  int outer_count() const { return epistemic.empty() ? 1 : epistemic_points; }
+  std::int64_t realisations_per_outer_point() const {
+    return realisations_per_stripe * static_cast<std::int64_t>(levels.size());
+  }
+  std::int64_t realisation_count() const { return outer_count() * realisations_per_outer_point(); }
 };
 
 EnsembleSpec load_ensemble(const std::filesystem::path& file);

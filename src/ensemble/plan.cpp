@@ -110,7 +110,10 @@ EnsemblePlan::EnsemblePlan(const EnsembleSpec& spec, InstructionSet isa)
       model_spec_(spec.base.model),
       nominal_(spec.base.parameters),
       sampler_(spec.sampling, spec.seed, static_cast<int>(spec.levels.size()), spec.realisations_per_stripe,
-               static_cast<int>(uncertain_parameter_names().size())) {
+               static_cast<int>(uncertain_parameter_names().size())),
+      // A key of its own, so that the outer points' numbers are not the first stripe's.
+      outer_sampler_(spec.sampling, spec.seed ^ 0x9e3779b97f4a7c15ull, 1, spec.outer_count(),
+                     static_cast<int>(uncertain_parameter_names().size())) {
   auto fail = [&](const std::string& message) { throw InputError(located(spec_.file, 0, message)); };
   // One time step for the whole ensemble (lanes advance in lockstep): the one the lightest
   // realisation needs, so that no realisation's result depends on the block it lands in.
@@ -180,15 +183,20 @@ RealisationInput EnsemblePlan::realisation(std::int64_t index) const {
   RealisationInput in;
   in.index = index;
   const std::int64_t n = spec_.realisations_per_stripe;
-  in.stripe = static_cast<int>(index / n);
-  const std::int64_t position = index % n;
+  in.outer = outer_of(index);
+  const std::int64_t inner = index % spec_.realisations_per_outer_point();
+  in.stripe = static_cast<int>(inner / n);
+  const std::int64_t position = inner % n;
   in.motion = static_cast<int>(position % motion_count());
   in.level = spec_.levels[in.stripe];
   in.scale_factor = in.level / intensity_of(in.motion, 1.0);
   in.parameters = nominal_;
   RealisationParameters& p = in.parameters;
   for (const auto& [name, distribution] : spec_.uncertain) {
-    const double value = distribution.quantile(sampler_.uniform(in.stripe, position, dimension_index(name)));
+    const int dimension = dimension_index(name);
+    const double u = spec_.epistemic.count(name) ? outer_sampler_.uniform(0, in.outer, dimension)
+                                                 : sampler_.uniform(in.stripe, position, dimension);
+    const double value = distribution.quantile(u);
     if (name == "friction_static") {
       p.friction_static = value;
       if (model_.friction_law == FrictionLaw::constant) p.friction_kinetic = value;

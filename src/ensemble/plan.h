@@ -4,9 +4,14 @@
 // motion, scale factor and physical parameters. Everything here is a pure function of the
 // ensemble file, so every thread, block and rank sees the same realisations.
 //
-// Realisation i belongs to stripe s = i / n (n realisations per stripe) at position
+// Realisation i belongs to outer point o = i / (S n) (S stripes of n realisations; one outer
+// point unless some parameters are epistemic), stripe s = (i mod S n) / n at position
 // j = i mod n, and uses motion j mod M (the M motions share each stripe equally). The
-// motion is scaled so that its intensity measure equals the stripe's level.
+// motion is scaled so that its intensity measure equals the stripe's level. Epistemic
+// parameters are drawn once per outer point (a Latin hypercube over the outer points, or
+// Monte Carlo, from a stream of their own); aleatory ones per (stripe, position), the same
+// draws at every outer point (common random numbers: outer points differ by their epistemic
+// values alone).
 
 #include <cstdint>
 #include <memory>
@@ -43,6 +48,7 @@ struct MotionIntensity {
 
 struct RealisationInput {
   std::int64_t index = 0;
+  int outer = 0;  // the outer point (epistemic sample); 0 without epistemic parameters
   int stripe = 0;
   int motion = 0;
   double level = 0.0;         // the stripe's intensity level
@@ -69,6 +75,7 @@ class EnsemblePlan {
   double frequency_parameter() const { return frequency_parameter_; }  // p of the rigid equivalent
 
   RealisationInput realisation(std::int64_t index) const;
+  int outer_of(std::int64_t index) const { return static_cast<int>(index / spec_.realisations_per_outer_point()); }
   // The motion's intensity (of the scaled motion as applied) for a given scale factor.
   double intensity_of(int motion, double scale_factor) const;
 
@@ -81,6 +88,7 @@ class EnsemblePlan {
   std::vector<MotionIntensity> intensities_;
   CalibrationCurve calibration_;
   Sampler sampler_;
+  Sampler outer_sampler_;
   double frequency_parameter_ = 0.0;
 };
 

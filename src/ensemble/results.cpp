@@ -143,6 +143,10 @@ std::vector<char> result_image(const std::filesystem::path& file, const Ensemble
     root.attribute("frequency_parameter_rad_s", plan.frequency_parameter());
     root.attribute("intensity_measure", intensity_name(spec.measure));
     root.attribute("seed", static_cast<std::int64_t>(spec.seed));
+    root.attribute("epistemic_points", static_cast<std::int64_t>(spec.outer_count()));
+    std::string epistemic;
+    for (const std::string& name : spec.epistemic) epistemic += (epistemic.empty() ? "" : ",") + name;
+    root.attribute("epistemic_parameters", epistemic);
     root.attribute("sampling", std::string(spec.sampling == SamplingMethod::latin_hypercube ? "latin_hypercube" : "monte_carlo"));
 
     hdf5::Group realisations = root.group("realisations");
@@ -216,6 +220,29 @@ std::vector<char> result_image(const std::filesystem::path& file, const Ensemble
           g.attribute("band_resampled", s.band.resampled);
         } else {
           g.attribute("not_fitted_because", s.fit.reason);
+        }
+        if (spec.outer_count() > 1) {
+          const fragility::NestedFit& n = s.nested;
+          hdf5::Group e = g.group("epistemic");
+          e.attribute("fitted", std::int64_t(n.fitted));
+          if (!n.fitted) e.attribute("not_fitted_because", n.reason);
+          if (n.fitted) {
+            e.attribute("median", n.median);
+            e.attribute("beta_r", n.beta_r);
+            e.attribute("beta_u", n.beta_u);
+            e.attribute("beta_c", n.beta_c());
+            e.attribute("log_median_spread", n.log_median_spread);
+            e.attribute("fit_noise", n.fit_noise);
+            e.attribute("confidence", n.confidence);
+            e.attribute("median_low", n.median_low);
+            e.attribute("median_high", n.median_high);
+            e.attribute("beta_r_low", n.beta_r_low);
+            e.attribute("beta_r_high", n.beta_r_high);
+            e.attribute("beta_u_low", n.beta_u_low);
+            e.attribute("beta_u_high", n.beta_u_high);
+          }
+          e.write("outer_median", n.outer_median);
+          e.write("outer_log_std", n.outer_log_std);
         }
       }
     }
