@@ -31,7 +31,8 @@ std::string format_level(IntensityMeasure measure, double value) {
   std::ostringstream out;
   out << std::setprecision(4);
   switch (measure) {
-    case IntensityMeasure::pga: out << units::si_to_g(value) << " g"; break;
+    case IntensityMeasure::pga:
+    case IntensityMeasure::sa: out << units::si_to_g(value) << " g"; break;
     case IntensityMeasure::pgv: out << 100.0 * value << " cm/s"; break;
     default: out << value; break;
   }

@@ -71,6 +71,14 @@ std::vector<NamedFragility> fragilities_of_result(const std::string& file, const
     if (measure == "pga_ratio") to_si = uplift;
     if (measure == "pgv" || measure == "pgv_ratio") im.kind = IntensityMeasure::Kind::pgv;
     if (measure == "pgv_ratio") to_si = uplift / root.double_attribute("frequency_parameter_rad_s");
+    if (measure == "sa") {
+      im = {IntensityMeasure::Kind::sa, root.double_attribute("intensity_period_s")};
+      // Hazard curves are of 5 %-damped spectra.
+      const double zeta = root.double_attribute("intensity_damping_ratio");
+      if (std::abs(zeta - 0.05) > 1e-9)
+        throw InputError(located(file, 0, "its fragility curves are of Sa at " + number_text(100.0 * zeta) +
+                                              " % damping; expected 5 %, the damping of hazard curves"));
+    }
     if (!(im == hazard_measure))
       throw InputError(located(file, 0, "its fragility curves are of " + intensity_measure_name(im) + " but the hazard curve " +
                                             hazard_file + " is of " + intensity_measure_name(hazard_measure) +

@@ -1,5 +1,7 @@
 #include "ensemble/ensemble_file.h"
 
+#include "motion/response_spectrum.h"
+
 #include <algorithm>
 #include <cmath>
 #include <fstream>
@@ -90,6 +92,7 @@ std::string intensity_name(IntensityMeasure measure) {
     case IntensityMeasure::pgv: return "pgv";
     case IntensityMeasure::pga_ratio: return "pga_ratio";
     case IntensityMeasure::pgv_ratio: return "pgv_ratio";
+    case IntensityMeasure::sa: return "sa";
   }
   return "pga";
 }
@@ -107,7 +110,7 @@ const KeySchema& ensemble_file_keys() {
     s.push_back(motions);
     s.push_back({"uncertain", uncertain_parameter_names()});
     s.push_back({"uncertain.*", {"distribution", "kind", "value", "low", "high", "mean", "std", "median", "log_std"}});
-    s.push_back({"intensity", {"measure", "levels", "realisations"}});
+    s.push_back({"intensity", {"measure", "period", "damping_ratio", "levels", "realisations"}});
     s.push_back({"sampling", {"method", "seed", "epistemic_points"}});
     s.push_back({"limit_states", {"tip_over", "rotation_ratio", "sliding"}});
     s.push_back({"fragility", {"bootstrap", "confidence"}});
@@ -211,12 +214,25 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
 
   {
     TableReader t = root.table("intensity");
-    const std::string measure = t.choice("measure", {"pga", "pgv", "pga_ratio", "pgv_ratio"});
+    const std::string measure = t.choice("measure", {"pga", "pgv", "pga_ratio", "pgv_ratio", "sa"});
     e.measure = measure == "pga" ? IntensityMeasure::pga
                 : measure == "pgv" ? IntensityMeasure::pgv
                 : measure == "pga_ratio" ? IntensityMeasure::pga_ratio
+                : measure == "sa" ? IntensityMeasure::sa
                                          : IntensityMeasure::pgv_ratio;
-    const Dimension dimension = e.measure == IntensityMeasure::pga   ? Dimension::acceleration
+    if (e.measure == IntensityMeasure::sa) {
+      e.spectral_period = t.quantity("period", Dimension::time);
+      if (!(e.spectral_period >= motion::kShortestSpectralPeriod && e.spectral_period <= motion::kLongestSpectralPeriod))
+        t.fail("period", "expected a period from " + number_text(motion::kShortestSpectralPeriod) + " to " +
+                             number_text(motion::kLongestSpectralPeriod) + " s");
+      if (auto zeta = t.optional_quantity("damping_ratio", Dimension::dimensionless)) {
+        if (!(*zeta >= 0.0 && *zeta < 1.0)) t.fail("damping_ratio", "expected a damping ratio from 0 to below 1 (0.05 is 5 %)");
+        e.spectral_damping_ratio = *zeta;
+      }
+    } else if (t.has("period") || t.has("damping_ratio")) {
+      t.fail(t.has("period") ? "period" : "damping_ratio", "only measure = \"sa\" has a period and a damping ratio");
+    }
+    const Dimension dimension = e.measure == IntensityMeasure::pga || e.measure == IntensityMeasure::sa ? Dimension::acceleration
                                 : e.measure == IntensityMeasure::pgv ? Dimension::velocity
                                                                      : Dimension::dimensionless;
     const toml::node* levels = t.has("levels") ? document["intensity"]["levels"].node() : nullptr;

@@ -24,6 +24,7 @@ enum class IntensityMeasure {
   pgv,        // peak table velocity, m/s
   pga_ratio,  // PGA / (g tan alpha): uplift starts near 1
   pgv_ratio,  // PGV p / (g tan alpha): the overturning-relevant velocity measure
+  sa,         // pseudo-spectral acceleration Sa(T, zeta) of the table motion, m/s^2
 };
 std::string intensity_name(IntensityMeasure measure);
 
@@ -55,6 +56,8 @@ struct EnsembleSpec {
   std::set<std::string> epistemic;
   int epistemic_points = 30;
   IntensityMeasure measure = IntensityMeasure::pga;
+  double spectral_period = 0.0;         // s, for sa
+  double spectral_damping_ratio = 0.05;  // for sa
   std::vector<double> levels;                     // SI (or dimensionless), increasing
   std::int64_t realisations_per_stripe = 0;
   SamplingMethod sampling = SamplingMethod::latin_hypercube;

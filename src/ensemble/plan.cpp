@@ -7,6 +7,7 @@
 #include "core/error.h"
 #include "core/text.h"
 #include "kernels/step.h"
+#include "motion/response_spectrum.h"
 #include "sim/case_run.h"
 #include "sim/free_vibration.h"
 #include "sim/rigid_equivalent.h"
@@ -144,7 +145,11 @@ EnsemblePlan::EnsemblePlan(const EnsembleSpec& spec, InstructionSet isa)
     intensity.pga = motion::peak_acceleration(*motions_.back(), model_.time_step);
     intensity.pgv = motion::peak_velocity(*motions_.back(), model_.time_step);
     intensity.duration = motions_.back()->duration();
-    if (!(intensity.pga > 0.0) || !(intensity.pgv > 0.0)) fail("motion " + spec_.motion_names[intensities_.size()] + " does not move the table");
+    if (spec_.measure == IntensityMeasure::sa) {
+      intensity.sa = motion::spectral_acceleration(*motions_.back(), spec_.spectral_period, spec_.spectral_damping_ratio,
+                                                   model_.time_step);
+    }
+    if (!(intensity.pga > 0.0) || !(intensity.pgv > 0.0) || (spec_.measure == IntensityMeasure::sa && !(intensity.sa > 0.0))) fail("motion " + spec_.motion_names[intensities_.size()] + " does not move the table");
     intensities_.push_back(intensity);
   }
 
@@ -175,6 +180,7 @@ double EnsemblePlan::intensity_of(int m, double scale) const {
     case IntensityMeasure::pgv: return scale * intensities_[m].pgv;
     case IntensityMeasure::pga_ratio: return scale * intensities_[m].pga / g_tan_alpha;
     case IntensityMeasure::pgv_ratio: return scale * intensities_[m].pgv * frequency_parameter_ / g_tan_alpha;
+    case IntensityMeasure::sa: return scale * intensities_[m].sa;  // Sa is linear in the motion
   }
   return 0.0;
 }

@@ -43,6 +43,7 @@ CalibrationCurve compute_calibration_curve(const Model& model, const ModelSpec& 
 struct MotionIntensity {
   double pga = 0.0;       // m/s^2
   double pgv = 0.0;       // m/s
+  double sa = 0.0;        // m/s^2, Sa(T, zeta) when the measure is sa (0 otherwise)
   double duration = 0.0;  // s (of the motion; runs add the settle time)
 };
 

@@ -142,6 +142,10 @@ std::vector<char> result_image(const std::filesystem::path& file, const Ensemble
     root.attribute("stability_angle_rad", plan.stability_angle());
     root.attribute("frequency_parameter_rad_s", plan.frequency_parameter());
     root.attribute("intensity_measure", intensity_name(spec.measure));
+    if (spec.measure == IntensityMeasure::sa) {
+      root.attribute("intensity_period_s", spec.spectral_period);
+      root.attribute("intensity_damping_ratio", spec.spectral_damping_ratio);
+    }
     root.attribute("seed", static_cast<std::int64_t>(spec.seed));
     root.attribute("epistemic_points", static_cast<std::int64_t>(spec.outer_count()));
     std::string epistemic;
@@ -166,6 +170,11 @@ std::vector<char> result_image(const std::filesystem::path& file, const Ensemble
     motions.write("pga", pga, "m/s^2");
     motions.write("pgv", pgv, "m/s");
     motions.write("duration", duration, "s");
+    if (spec.measure == IntensityMeasure::sa) {
+      std::vector<double> sa;
+      for (int m = 0; m < plan.motion_count(); ++m) sa.push_back(plan.intensity(m).sa);
+      motions.write("sa", sa, "m/s^2");
+    }
 
     hdf5::Group stripes = root.group("stripes");
     stripes.write("level", spec.levels, intensity_name(spec.measure));

@@ -31,6 +31,7 @@
 
 #include "core/text.h"
 #include "core/units.h"
+#include "motion/response_spectrum.h"
 #include "motion/table_motion.h"
 
 namespace caskdem::motion {
@@ -262,6 +263,17 @@ double sampled_peak(const TableMotion& motion, double dt, F f) {
 double peak_acceleration(const TableMotion& motion, double dt) {
   if (const auto* r = dynamic_cast<const RecordMotion*>(&motion)) return peak_ground_acceleration(r->record());
   return sampled_peak(motion, dt, [&](double t) { return motion.acceleration(t); });
+}
+
+double spectral_acceleration(const TableMotion& motion, double period, double damping_ratio, double dt) {
+  if (const auto* r = dynamic_cast<const RecordMotion*>(&motion)) return spectral_acceleration(r->record(), period, damping_ratio);
+  Record sampled;
+  sampled.source = motion.describe();
+  sampled.time_step = dt;
+  const auto steps = static_cast<std::int64_t>(std::ceil(motion.duration() / dt));
+  sampled.acceleration.resize(static_cast<std::size_t>(steps + 1));
+  sample_acceleration(motion, dt, 0, static_cast<int>(steps + 1), sampled.acceleration.data());
+  return spectral_acceleration(sampled, period, damping_ratio);
 }
 
 double peak_velocity(const TableMotion& motion, double dt) {

@@ -57,5 +57,8 @@ void sample_acceleration(const TableMotion& motion, double dt, std::int64_t firs
 // (records: their own samples, and PGV from integrate_record).
 double peak_acceleration(const TableMotion& motion, double dt);
 double peak_velocity(const TableMotion& motion, double dt);
+// Sa(T, zeta) of the motion (motion/response_spectrum.h): a record's own samples, any other
+// motion sampled at t = n dt as above (linear between samples, as the runs see it).
+double spectral_acceleration(const TableMotion& motion, double period, double damping_ratio, double dt);
 
 }  // namespace caskdem::motion

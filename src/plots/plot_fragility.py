@@ -15,7 +15,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 UNITS = {"pga": ("PGA [g]", 1.0 / 9.80665), "pgv": ("PGV [cm/s]", 100.0),
-         "pga_ratio": ("PGA / (g tan alpha)", 1.0), "pgv_ratio": ("PGV p / (g tan alpha)", 1.0)}
+         "pga_ratio": ("PGA / (g tan alpha)", 1.0), "pgv_ratio": ("PGV p / (g tan alpha)", 1.0),
+         "sa": ("Sa(T) [g]", 1.0 / 9.80665)}
 
 
 def text(value):
@@ -30,6 +31,8 @@ def main(result_file, png_file):
     with h5py.File(result_file, "r") as f:
         measure = text(f.attrs["intensity_measure"])
         label, factor = UNITS[measure]
+        if measure == "sa":
+            label = "Sa(%g s, %g %%) [g]" % (f.attrs["intensity_period_s"], 100.0 * f.attrs["intensity_damping_ratio"])
         title = text(f.attrs.get("title", ""))
         completed = int(f.attrs["completed"])
         total = int(f.attrs["realisations"])
