@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include <boost/math/distributions/normal.hpp>
@@ -19,6 +20,15 @@ constexpr double kHclpfZ = 1.6448536269514722;     // Phi^-1(0.95)
 constexpr double kOnePercentZ = 2.3263478740408408;  // Phi^-1(0.99)
 
 double normal_cdf(double z) { return 0.5 * std::erfc(-z / std::sqrt(2.0)); }
+
+// ln Phi(z), finite far into the lower tail (where Phi underflows but a steep hazard continued
+// below its first point can still outgrow it): the asymptotic series there (Abramowitz and
+// Stegun 26.2.12), within 1e-9 relative beyond z = -30.
+double log_normal_cdf(double z) {
+  if (z > -30.0) return std::log(normal_cdf(z));
+  const double z2 = z * z;
+  return -0.5 * z2 - std::log(-z) - 0.5 * std::log(2.0 * std::numbers::pi) + std::log1p(-1.0 / z2 + 3.0 / (z2 * z2));
+}
 
 double integrate(const auto& f, double from, double to, double& error) {
   double e = 0.0;
@@ -39,13 +49,18 @@ struct LogLogHazard {
     for (std::size_t i = 0; i + 1 < x.size(); ++i) slope.push_back(-(log_h[i + 1] - log_h[i]) / (x[i + 1] - x[i]));
   }
   std::size_t last() const { return x.size() - 1; }
-  // |dH/dx| at x on the power law of segment i (i = last: the last segment continued).
-  double density(std::size_t i, double at) const {
-    const std::size_t s = std::min(i, slope.size() - 1);
-    const double k = slope[s];
-    return k * std::exp(log_h[i] - k * (at - x[i]));
+  // ln |dH/dx| at x on the power law of segment i (i = last: the last segment continued);
+  // -infinity on a flat segment.
+  double log_density(std::size_t i, double at) const {
+    const double k = slope[std::min(i, slope.size() - 1)];
+    return k > 0.0 ? std::log(k) + log_h[i] - k * (at - x[i]) : -INFINITY;
   }
 };
+
+// F(x) |dH/dx| on segment i, its logarithms added so that neither factor overflows alone.
+double integrand(const LogLogHazard& h, std::size_t i, double x, double log_median, double beta) {
+  return std::exp(log_normal_cdf((x - log_median) / beta) + h.log_density(i, x));
+}
 
 // Continued below the first point down to where the fragility has no weight left.
 double lower_limit(const LogLogHazard& h, double log_median, double beta) {
@@ -53,7 +68,7 @@ double lower_limit(const LogLogHazard& h, double log_median, double beta) {
 }
 
 double part_below(const LogLogHazard& h, double log_median, double beta, double down_to_x, double& error) {
-  const auto f = [&](double x) { return normal_cdf((x - log_median) / beta) * h.density(0, x); };
+  const auto f = [&](double x) { return integrand(h, 0, x, log_median, beta); };
   const double from = lower_limit(h, log_median, beta);
   return down_to_x > from ? integrate(f, from, down_to_x, error) : 0.0;
 }
@@ -89,20 +104,26 @@ FrequencyIntegral convolve(const HazardCurve& hazard, double median, double beta
   double error = 0.0;
   result.below_curve = part_below(h, m, beta, h.x.front(), error);
   for (std::size_t i = 0; i + 1 < h.x.size(); ++i) {
-    const auto f = [&](double x) { return fragility(x) * h.density(i, x); };
+    const auto f = [&](double x) { return integrand(h, i, x, m, beta); };
     result.segment_frequency.push_back(integrate(f, h.x[i], h.x[i + 1], error));
   }
   // Above the last point the last power law, to where it has fallen by e^-50 (or, flat, adds nothing).
   const std::size_t n = h.last();
   const double k = h.slope.back();
   if (k > 0.0) {
-    const auto f = [&](double x) { return fragility(x) * h.density(n, x); };
+    const auto f = [&](double x) { return integrand(h, n, x, m, beta); };
     result.above_curve = integrate(f, h.x[n], h.x[n] + 50.0 / k, error);
   }
   result.undetermined_above = hazard.annual_frequency.back() * (1.0 - fragility(h.x[n]));
   result.annual_frequency = result.below_curve + result.above_curve;
   for (double s : result.segment_frequency) result.annual_frequency += s;
   result.error_estimate = error;
+  // A curve whose end segment is steep enough continues, below its first point, to
+  // frequencies that outgrow any fragility's tail: no answer.
+  if (!std::isfinite(result.annual_frequency))
+    throw std::invalid_argument("the hazard curve continued below its first point (slope " + number_text(h.slope.front()) +
+                                " in log-log) grows faster than the fragility falls: expected a curve reaching down to "
+                                "intensities where the fragility is negligible");
   return result;
 }
 

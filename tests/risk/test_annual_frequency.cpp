@@ -113,6 +113,24 @@ TEST(AnnualFrequency, ACurveThatStopsShortOfTheFragilityIsRefusedSayingWhereItMu
   EXPECT_NO_THROW(site_risk(curve_of(power, 1e-2, 5.0, 20), f));
 }
 
+TEST(AnnualFrequency, ACurveWhoseContinuationOutgrowsTheFragilityIsRefusedNotANumber) {
+  // Found by fuzzing: 3.1e4 per year at 0.01 g falling to 2.1e-7 at 0.0158 g, a log-log slope
+  // of 56. Continued below 0.01 g it grows as e^(56 (x0 - x)), and F |dH| overflowed to
+  // infinity times a cdf that underflowed to 0: the answer was NaN. Worked in logarithms the
+  // integrand stays finite, its integral is still astronomical, and the curve is refused.
+  HazardCurve c;
+  c.measure = {IntensityMeasure::Kind::pga, 0.0};
+  c.intensity = {0.01 * g, 0.0158 * g};
+  c.annual_frequency = {3.130186e4, 2.097187e-07};
+  const LognormalFragility f{std::sqrt(0.01 * 0.0158) * g, 0.4, 0.3};
+  EXPECT_THROW(site_risk(c, f), std::invalid_argument);
+  try {
+    site_risk(c, f);
+  } catch (const std::invalid_argument& e) {
+    EXPECT_NE(std::string(e.what()).find("expected a curve"), std::string::npos) << e.what();
+  }
+}
+
 TEST(AnnualFrequency, ProbabilityInYearsAndAnnualFrequencyAreOneAnother) {
   // 10 % in 50 years is the 475-year return period of building codes.
   EXPECT_NEAR(1.0 / annual_frequency_from_probability(0.10, 50.0), 474.56, 0.01);
