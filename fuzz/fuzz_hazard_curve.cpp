@@ -18,6 +18,12 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
     fuzz::expect_refusal_or_success([&] {
       const risk::HazardCurve curve = risk::read_hazard_curve(file, options);
       try {
+        risk::check_hazard_curve(curve);  // a curve the reader accepts, the integral takes
+      } catch (const std::invalid_argument& e) {
+        std::cerr << "the reader accepted a curve the integral refuses: " << e.what() << "\n";
+        std::abort();
+      }
+      try {
         const double median = std::sqrt(curve.intensity.front() * curve.intensity.back());
         const risk::SiteRisk r = risk::site_risk(curve, {median, 0.4, 0.3});
         if (!std::isfinite(r.mean) || r.mean < 0.0 || !std::isfinite(r.fractile_95) || !std::isfinite(r.fractile_05)) {

@@ -3,6 +3,8 @@
 // site's hazard curve (risk/annual_frequency.h), with HCLPF, the probability in N years, the
 // ratio to a target and the intensities that contribute; a JSON and a PNG beside.
 
+#include <unistd.h>
+
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -28,6 +30,34 @@ namespace caskdem::commands {
 
 namespace {
 
+// The answer into the result file as a /risk group (replacing an earlier one), written back
+// whole and sealed through a temporary file renamed over it, as the ensemble writes it.
+void write_risk_group(const std::string& file, const nlohmann::json& report) {
+  hdf5::Group root = hdf5::open_sealed_in_memory(file, "a result file of caskdem ensemble");
+  root.remove("risk");
+  hdf5::Group risk = root.group("risk");
+  const auto& hazard = report["hazard"];
+  risk.attribute("hazard_source", hazard["source"].get<std::string>());
+  risk.attribute("measure", hazard["measure"].get<std::string>());
+  risk.attribute("unit", hazard["unit"].get<std::string>());
+  risk.attribute("years", report["years"].get<double>());
+  risk.attribute("target_annual_frequency", report["target_annual_frequency"].get<double>());
+  if (report.contains("design_basis")) risk.attribute("design_basis", report["design_basis"].get<double>());
+  risk.write("hazard_intensity", hazard["intensity"].get<std::vector<double>>(), hazard["unit"].get<std::string>());
+  risk.write("hazard_annual_frequency", hazard["annual_frequency"].get<std::vector<double>>(), "1/yr");
+  for (const auto& state : report["limit_states"]) {
+    hdf5::Group g = risk.group(state["name"].get<std::string>());
+    for (const auto& [key, value] : state.items()) {
+      if (value.is_number()) g.attribute(key, value.get<double>());
+    }
+    g.write("segment_annual_frequency", state["segment_annual_frequency"].get<std::vector<double>>(), "1/yr");
+  }
+  const std::vector<char> image = hdf5::file_image(root);
+  const std::filesystem::path temporary = file + ".partial-" + std::to_string(::getpid());
+  hdf5::write_sealed(temporary, image);
+  std::filesystem::rename(temporary, file);
+}
+
 using risk::IntensityMeasure;
 
 struct NamedFragility {
@@ -37,7 +67,7 @@ struct NamedFragility {
 
 struct RiskOptions {
   std::string result, hazard, format = "automatic", imt, site, median, design_basis, json, plot;
-  double beta = 0.0, beta_r = 0.0, beta_u = 0.0, years = 50.0, target = 1e-5;
+  double beta = 0.0, beta_r = 0.0, beta_u = 0.0, years = 50.0, target = 1e-5, similarity = 1.0;
   bool no_plot = false;
 };
 
@@ -52,10 +82,19 @@ double intensity_option(const std::string& option, const std::string& text, cons
   return *value;
 }
 
-// The fitted lognormal of each limit state of an ensemble result, in the SI unit of PGA or PGV.
+// A model's intensities as the prototype's, by the similarity law of a 1/N model (caskdem
+// similarity): lengths 1/N, times 1/sqrt(N), so accelerations alike and velocities 1/sqrt(N);
+// a spectral ordinate keeps its value at a period sqrt(N) times longer.
+double prototype_factor(IntensityMeasure& measure, double n) {
+  if (measure.kind == IntensityMeasure::Kind::sa) measure.period *= std::sqrt(n);
+  return measure.kind == IntensityMeasure::Kind::pgv ? std::sqrt(n) : 1.0;
+}
+
+// The fitted lognormal of each limit state of an ensemble result, in the SI unit of PGA, PGV
+// or SA(T) (the measure in `measure`), as prototype intensities when `similarity` is not 1.
 // Limit states without a fitted curve are noted in `notes`, printed once every input is read.
 std::vector<NamedFragility> fragilities_of_result(const std::string& file, const IntensityMeasure& hazard_measure,
-                                                  const std::string& hazard_file, double beta_u,
+                                                  const std::string& hazard_file, double beta_u, double similarity,
                                                   std::vector<std::string>& notes) {
   std::vector<NamedFragility> out;
   try {
@@ -64,6 +103,8 @@ std::vector<NamedFragility> fragilities_of_result(const std::string& file, const
     if (!root.has("limit_states"))
       throw InputError(located(file, 0, "has no limit_states group; expected the result file of a completed ensemble"));
     const std::string measure = root.string_attribute("intensity_measure");
+    if (measure != "pga" && measure != "pga_ratio" && measure != "pgv" && measure != "pgv_ratio" && measure != "sa")
+      throw InputError(located(file, 0, "intensity_measure \"" + measure + "\"; expected pga, pgv, pga_ratio, pgv_ratio or sa"));
     // Ratios to the uplift threshold g tan(alpha) (and p for PGV) convert to PGA and PGV.
     const double uplift = units::standard_gravity * std::tan(root.double_attribute("stability_angle_rad"));
     IntensityMeasure im{IntensityMeasure::Kind::pga, 0.0};
@@ -79,8 +120,10 @@ std::vector<NamedFragility> fragilities_of_result(const std::string& file, const
         throw InputError(located(file, 0, "its fragility curves are of Sa at " + number_text(100.0 * zeta) +
                                               " % damping; expected 5 %, the damping of hazard curves"));
     }
+    to_si *= prototype_factor(im, similarity);
     if (!(im == hazard_measure))
-      throw InputError(located(file, 0, "its fragility curves are of " + intensity_measure_name(im) + " but the hazard curve " +
+      throw InputError(located(file, 0, "its fragility curves are of " + intensity_measure_name(im) +
+                                            (similarity != 1.0 ? " (as the prototype's)" : "") + " but the hazard curve " +
                                             hazard_file + " is of " + intensity_measure_name(hazard_measure) +
                                             "; expected a hazard curve of " + intensity_measure_name(im)));
     const hdf5::Group all = root.open_group("limit_states");
@@ -104,6 +147,13 @@ std::vector<NamedFragility> fragilities_of_result(const std::string& file, const
                         "); the pooled curve, taken as aleatory");
       }
       out.push_back({name, {g.double_attribute("median") * to_si, g.double_attribute("log_std"), beta_u}});
+    }
+    for (const NamedFragility& f : out) {
+      try {
+        risk::check_fragility(f.fragility);
+      } catch (const std::invalid_argument& e) {
+        throw InputError(located(file, 0, "limit state " + f.name + ": " + e.what()));
+      }
     }
   } catch (const InputError&) {
     throw;
@@ -143,13 +193,18 @@ void run_risk(const RiskOptions& o, bool beta_given, bool beta_r_given, bool bet
   if (!o.result.empty()) {
     if (!o.median.empty() || beta_given || beta_r_given)
       throw InputError("--median, --beta and --beta-r: give a fragility either by its parameters or by a result file, not both");
-    fragilities = fragilities_of_result(o.result, im, o.hazard, o.beta_u, notes);
+    fragilities = fragilities_of_result(o.result, im, o.hazard, o.beta_u, o.similarity, notes);
   } else {
     if (o.median.empty() || (!beta_given && !beta_r_given))
       throw InputError("risk: expected a result file, or --median with --beta (or --beta-r and --beta-u)");
     if (beta_given && (beta_r_given || beta_u_given))
       throw InputError("--beta: give either --beta (aleatory alone) or --beta-r with --beta-u, not both");
-    fragilities.push_back({"given", {intensity_option("--median", o.median, im), beta_given ? o.beta : o.beta_r, o.beta_u}});
+    IntensityMeasure model = im;
+    if (o.similarity != 1.0 && im.kind == IntensityMeasure::Kind::sa)
+      throw InputError("--similarity: a given SA fragility is at the model's period; give it at the prototype's instead");
+    const double factor = prototype_factor(model, o.similarity);
+    fragilities.push_back(
+        {"given", {intensity_option("--median", o.median, im) * factor, beta_given ? o.beta : o.beta_r, o.beta_u}});
     try {
       risk::check_fragility(fragilities.back().fragility);
     } catch (const std::invalid_argument& e) {
@@ -181,6 +236,9 @@ void run_risk(const RiskOptions& o, bool beta_given, bool beta_r_given, bool bet
   std::cout << "hazard     " << hazard.source << ": " << intensity_measure_name(im) << ", " << hazard.intensity.size()
             << " points from " << intensity_text(hazard.intensity.front(), im) << " to "
             << intensity_text(hazard.intensity.back(), im) << "\n";
+  if (o.similarity != 1.0)
+    std::cout << "similarity the fragility is a 1/" << o.similarity << " model's, set against the site as the prototype's "
+              << "(accelerations alike, PGV x sqrt(" << o.similarity << "), Sa at sqrt(" << o.similarity << ") times the period)\n";
   nlohmann::json report;
   report["hazard"] = {{"source", hazard.source},
                       {"measure", intensity_measure_name(im)},
@@ -190,6 +248,7 @@ void run_risk(const RiskOptions& o, bool beta_given, bool beta_r_given, bool bet
   for (double a : hazard.intensity) shown.push_back(a / risk::display_unit_to_si(im));
   report["hazard"]["intensity"] = shown;
   report["years"] = o.years;
+  report["similarity"] = o.similarity;
   report["target_annual_frequency"] = o.target;
   if (design_basis > 0.0) report["design_basis"] = design_basis / risk::display_unit_to_si(im);
   report["limit_states"] = nlohmann::json::array();
@@ -241,6 +300,10 @@ void run_risk(const RiskOptions& o, bool beta_given, bool beta_r_given, bool bet
     report["limit_states"].push_back(j);
   }
 
+  if (!o.result.empty()) {
+    write_risk_group(o.result, report);
+    std::cout << "wrote " << o.result << " (its /risk group)\n";
+  }
   if (!json.empty()) {
     std::ofstream(json) << report.dump(2) << "\n";
     std::cout << "wrote " << json.string() << "\n";
@@ -267,6 +330,9 @@ void add_risk(CLI::App& app) {
   auto* beta_r = cmd->add_option("--beta-r", o->beta_r, "Aleatory log standard deviation beta_R")->check(positive_number());
   auto* beta_u = cmd->add_option("--beta-u", o->beta_u, "Epistemic log standard deviation beta_U (default 0)")
                      ->check(non_negative_number());
+  cmd->add_option("--similarity", o->similarity,
+                  "The fragility is a 1/N model's: set its intensities against the site as the prototype's (PGV x sqrt(N))")
+      ->check(number_check("a scale N of at least 1", [](double x) { return x >= 1.0; }, "N"));
   cmd->add_option("--years", o->years, "Years for the probability of exceedance (default 50)")->check(positive_number());
   cmd->add_option("--target", o->target, "Target annual frequency (default 1e-5, ASCE 43 SDC-5)")->check(positive_number());
   cmd->add_option("--design-basis", o->design_basis, "Design-basis intensity, e.g. \"0.3 g\": HCLPF against it");

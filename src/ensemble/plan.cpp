@@ -110,8 +110,8 @@ EnsemblePlan::EnsemblePlan(const EnsembleSpec& spec, InstructionSet isa)
     : spec_(spec),
       model_spec_(spec.base.model),
       nominal_(spec.base.parameters),
-      sampler_(spec.sampling, spec.seed, static_cast<int>(spec.levels.size()), spec.realisations_per_stripe,
-               static_cast<int>(uncertain_parameter_names().size())),
+      sampler_(spec.sampling, spec.seed, spec.outer_count() * static_cast<int>(spec.levels.size()),
+               spec.realisations_per_stripe, static_cast<int>(uncertain_parameter_names().size())),
       // A key of its own, so that the outer points' numbers are not the first stripe's.
       outer_sampler_(spec.sampling, spec.seed ^ 0x9e3779b97f4a7c15ull, 1, spec.outer_count(),
                      static_cast<int>(uncertain_parameter_names().size())) {
@@ -200,8 +200,9 @@ RealisationInput EnsemblePlan::realisation(std::int64_t index) const {
   RealisationParameters& p = in.parameters;
   for (const auto& [name, distribution] : spec_.uncertain) {
     const int dimension = dimension_index(name);
+    const int sample_stripe = in.outer * static_cast<int>(spec_.levels.size()) + in.stripe;
     const double u = spec_.epistemic.count(name) ? outer_sampler_.uniform(0, in.outer, dimension)
-                                                 : sampler_.uniform(in.stripe, position, dimension);
+                                                 : sampler_.uniform(sample_stripe, position, dimension);
     const double value = distribution.quantile(u);
     if (name == "friction_static") {
       p.friction_static = value;

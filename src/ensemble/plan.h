@@ -9,9 +9,11 @@
 // j = i mod n, and uses motion j mod M (the M motions share each stripe equally). The
 // motion is scaled so that its intensity measure equals the stripe's level. Epistemic
 // parameters are drawn once per outer point (a Latin hypercube over the outer points, or
-// Monte Carlo, from a stream of their own); aleatory ones per (stripe, position), the same
-// draws at every outer point (common random numbers: outer points differ by their epistemic
-// values alone).
+// Monte Carlo, from a stream of their own); aleatory ones per (outer point, stripe, position),
+// each outer point a sample of its own (the sampler sees outer point o's stripe s as stripe
+// o S + s, so outer point 0, and an ensemble without epistemic parameters, draw as before).
+// Independent inner samples keep each outer point's fit noise its own, which the estimate
+// of beta_U takes out (ensemble/epistemic.h); common draws would share it.
 
 #include <cstdint>
 #include <memory>

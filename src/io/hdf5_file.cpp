@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstring>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <stdexcept>
 #include <string_view>
@@ -66,6 +67,10 @@ Group Group::open_group(const std::string& name) const {
 }
 
 bool Group::has(const std::string& name) const { return H5Lexists(id(), name.c_str(), H5P_DEFAULT) > 0; }
+
+void Group::remove(const std::string& name) {
+  if (has(name) && H5Ldelete(id(), name.c_str(), H5P_DEFAULT) < 0) fail("cannot remove " + name);
+}
 
 std::vector<std::string> Group::member_names() const {
   std::vector<std::string> names;
@@ -292,6 +297,23 @@ void write_sealed(const std::filesystem::path& file, const std::vector<char>& im
   out.write(image.data(), static_cast<std::streamsize>(image.size()));
   out.close();
   if (!out) throw std::runtime_error(file.string() + ": cannot be written whole (is the disk full?)");
+}
+
+Group open_sealed_in_memory(const std::filesystem::path& file, const std::string& expected) {
+  check_seal(file, expected);
+  quiet();
+  std::ifstream in(file, std::ios::binary);
+  std::vector<char> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // The image as on disk (seal in the user block, HDF5 after it); HDF5 copies it.
+  Handle access(H5Pcreate(H5P_FILE_ACCESS), H5Pclose);
+  if (H5Pset_fapl_core(access.get(), 1 << 20, 0) < 0 || H5Pset_file_image(access.get(), bytes.data(), bytes.size()) < 0)
+    throw std::runtime_error(file.string() + ": cannot set up an HDF5 file in memory");
+  // Under a name of its own: HDF5 would take the path for the file on disk if that is open.
+  const std::string name = file.string() + ".in-memory";
+  Handle f(H5Fopen(name.c_str(), H5F_ACC_RDWR, access.get()), H5Fclose);
+  if (!f.valid()) throw InputError(located(file, 0, "cannot be opened as HDF5; expected " + expected));
+  Handle root(H5Gopen2(f.get(), "/", H5P_DEFAULT), H5Gclose);
+  return Group(std::move(root), "/", file);
 }
 
 void check_seal(const std::filesystem::path& file, const std::string& expected) {

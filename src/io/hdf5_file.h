@@ -39,6 +39,7 @@ class Group {
   Group group(const std::string& name);         // creates
   Group open_group(const std::string& name) const;
   bool has(const std::string& name) const;
+  void remove(const std::string& name);  // a member (group or dataset), if there
   std::vector<std::string> member_names() const;  // groups and datasets, in name order
 
   void write(const std::string& name, const std::vector<double>& values, const std::string& units = "");
@@ -88,5 +89,8 @@ Group create_in_memory(const std::string& name);
 std::vector<char> file_image(const Group& root);  // the file after its user block
 void write_sealed(const std::filesystem::path& file, const std::vector<char>& image);
 void check_seal(const std::filesystem::path& file, const std::string& expected);
+// A sealed file, its seal checked, opened in memory to be added to; write it back with
+// file_image and write_sealed (to a temporary file renamed over it, as every sealed write).
+Group open_sealed_in_memory(const std::filesystem::path& file, const std::string& expected);
 
 }  // namespace caskdem::hdf5

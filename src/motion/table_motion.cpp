@@ -267,12 +267,16 @@ double peak_acceleration(const TableMotion& motion, double dt) {
 
 double spectral_acceleration(const TableMotion& motion, double period, double damping_ratio, double dt) {
   if (const auto* r = dynamic_cast<const RecordMotion*>(&motion)) return spectral_acceleration(r->record(), period, damping_ratio);
+  // At most kSpectrumSamples samples (32 MB): a long motion at a fine run step is sampled more
+  // coarsely, still far finer than any period a spectrum is asked for.
+  constexpr std::int64_t kSpectrumSamples = std::int64_t(1) << 22;
+  const double step = std::max(dt, motion.duration() / static_cast<double>(kSpectrumSamples - 1));
   Record sampled;
   sampled.source = motion.describe();
-  sampled.time_step = dt;
-  const auto steps = static_cast<std::int64_t>(std::ceil(motion.duration() / dt));
+  sampled.time_step = step;
+  const auto steps = std::min(static_cast<std::int64_t>(std::ceil(motion.duration() / step)), kSpectrumSamples - 1);
   sampled.acceleration.resize(static_cast<std::size_t>(steps + 1));
-  sample_acceleration(motion, dt, 0, static_cast<int>(steps + 1), sampled.acceleration.data());
+  sample_acceleration(motion, step, 0, static_cast<int>(steps + 1), sampled.acceleration.data());
   return spectral_acceleration(sampled, period, damping_ratio);
 }
 

@@ -58,7 +58,8 @@ void sample_acceleration(const TableMotion& motion, double dt, std::int64_t firs
 double peak_acceleration(const TableMotion& motion, double dt);
 double peak_velocity(const TableMotion& motion, double dt);
 // Sa(T, zeta) of the motion (motion/response_spectrum.h): a record's own samples, any other
-// motion sampled at t = n dt as above (linear between samples, as the runs see it).
+// motion sampled at t = n dt as above (linear between samples, as the runs see it), or more
+// coarsely where that would take over 2^22 samples.
 double spectral_acceleration(const TableMotion& motion, double period, double damping_ratio, double dt);
 
 }  // namespace caskdem::motion

@@ -84,6 +84,8 @@ HazardCurve build_curve(const std::filesystem::path& file, std::string source, c
     if (frequency > previous_frequency * (1.0 + 1e-9))
       fail_at(file, p.line, where(p) + "the hazard rises from " + number_text(previous_frequency) + " to " +
                                 number_text(frequency) + " per year; expected a curve that never rises with intensity");
+    // A rise within rounding (1e-9) is taken as flat, so the stored curve never rises.
+    frequency = std::min(frequency, previous_frequency);
     previous_frequency = frequency;
     if (frequency == 0.0) {
       curve.cut_at_zero = true;
@@ -255,14 +257,18 @@ HazardCurve read_table(const std::filesystem::path& file, const std::vector<std:
   double years = 0.0;
   static const std::regex years_pattern(R"(([0-9]+(\.[0-9]+)?)\s*_?\s*(y|yr|yrs|year|years)\b)");
   std::smatch m;
-  if (second.find("poe") != std::string::npos || second.find("probab") != std::string::npos) {
+  const bool probability = second.find("poe") != std::string::npos || second.find("probab") != std::string::npos;
+  const bool annual = second.find("annual") != std::string::npos;
+  if (probability && annual && !std::regex_search(second, m, years_pattern)) {
+    years = 1.0;  // "annual probability of exceedance"
+  } else if (probability) {
     if (!std::regex_search(second, m, years_pattern))
       fail_at(file, header_line, "second column \"" + names[1] + "\" holds probabilities; expected the years they are in, "
                                      "as \"poe in 50 years\"");
-    years = std::stod(m[1].str());
-    if (years <= 0.0) fail_at(file, header_line, "second column: expected a number of years above 0");
-  } else if (second.find("annual") == std::string::npos && second.find("frequency") == std::string::npos &&
-             second.find("rate") == std::string::npos) {
+    years = parse_double(m[1].str()).value_or(0.0);
+    if (!(years > 0.0) || !std::isfinite(years))
+      fail_at(file, header_line, "second column: expected a number of years above 0");
+  } else if (!annual && second.find("frequency") == std::string::npos && second.find("rate") == std::string::npos) {
     fail_at(file, header_line, "second column \"" + names[1] + "\"; expected \"annual frequency\" or \"poe in N years\"");
   }
   std::vector<FilePoint> points;
@@ -309,9 +315,9 @@ std::optional<IntensityMeasure> parse_intensity_measure(std::string_view text) {
   std::smatch m;
   double period = 0.0;
   if (std::regex_match(t, m, sa)) {
-    period = std::stod(m[1].str());
+    period = parse_double(m[1].str()).value_or(0.0);
   } else if (std::regex_match(t, m, folder)) {
-    period = std::stod(m[1].str() + "." + m[2].str());
+    period = parse_double(m[1].str() + "." + m[2].str()).value_or(0.0);
   } else {
     return std::nullopt;
   }

@@ -1,6 +1,7 @@
 // An ensemble with epistemic parameters, run end to end: each outer point holds its epistemic
-// values fixed (one per stratum of a Latin hypercube over the outer points) while its aleatory
-// draws repeat those of every other outer point (common random numbers); the result file
+// values fixed (one per stratum of a Latin hypercube over the outer points) and draws its
+// aleatory values afresh (outer point 0 as the same ensemble without epistemic parameters
+// would, the others their own Latin hypercube per stripe); the result file
 // carries each limit state's family (A_m, beta_R, beta_U with their intervals), and
 // `caskdem risk` takes beta_U from it.
 
@@ -38,8 +39,11 @@ class EpistemicEnsemble : public testing::TemporaryFiles {
   }
 };
 
-TEST_F(EpistemicEnsemble, EachOuterPointHoldsItsEpistemicValuesAndRepeatsTheAleatoryDraws) {
+TEST_F(EpistemicEnsemble, EachOuterPointHoldsItsEpistemicValuesAndDrawsItsOwnAleatorySample) {
   const EnsemblePlan plan(load_ensemble(nested("friction_static", 5, 16)), InstructionSet::scalar);
+  std::string flat_text = testing::file_text(std::string(CASKDEM_SOURCE_DIR) + "/tests/ensemble/data/mixed-outcomes.toml");
+  flat_text = std::regex_replace(flat_text, std::regex("realisations = 64"), "realisations = 16");
+  const EnsemblePlan flat(load_ensemble(write("flat.toml", flat_text)), InstructionSet::scalar);
   const EnsembleSpec& spec = plan.spec();
   ASSERT_EQ(spec.outer_count(), 5);
   ASSERT_EQ(plan.size(), 5 * 4 * 16);
@@ -52,12 +56,26 @@ TEST_F(EpistemicEnsemble, EachOuterPointHoldsItsEpistemicValuesAndRepeatsTheAlea
       const RealisationInput in = plan.realisation(o * per_outer + i);
       EXPECT_EQ(in.outer, o);
       EXPECT_EQ(in.parameters.friction_static, friction) << "outer point " << o << ", realisation " << i;
-      // Common random numbers: the aleatory draws are those of outer point 0.
+      // The same stripe and motion as at outer point 0, but an aleatory sample of its own.
       const RealisationInput first = plan.realisation(i);
-      EXPECT_EQ(in.parameters.friction_kinetic, first.parameters.friction_kinetic);
-      EXPECT_EQ(in.restitution, first.restitution);
       EXPECT_EQ(in.stripe, first.stripe);
       EXPECT_EQ(in.motion, first.motion);
+      if (o == 0) {
+        EXPECT_EQ(in.parameters.friction_kinetic, flat.realisation(i).parameters.friction_kinetic);
+        EXPECT_EQ(in.restitution, flat.realisation(i).restitution);
+      } else {
+        EXPECT_NE(in.parameters.friction_kinetic, first.parameters.friction_kinetic) << "outer point " << o;
+      }
+    }
+    // Within each stripe of each outer point a Latin hypercube: the 16 kinetic frictions of
+    // U(0.06, 0.6) fall one in each sixteenth.
+    for (int s = 0; s < 4; ++s) {
+      std::set<int> cells;
+      for (int j = 0; j < 16; ++j) {
+        const double mu = plan.realisation(o * per_outer + s * 16 + j).parameters.friction_kinetic;
+        cells.insert(static_cast<int>((mu - 0.06) / (0.54 / 16.0)));
+      }
+      EXPECT_EQ(cells.size(), 16u) << "outer point " << o << ", stripe " << s;
     }
   }
   // A Latin hypercube over the outer points: one value in each fifth of U(0.08, 0.8).

@@ -120,6 +120,16 @@ TEST_F(HazardCurveFiles, ASiteIsChosenFromAFileOfSeveral) {
             std::string::npos);
 }
 
+TEST_F(HazardCurveFiles, AnAnnualProbabilityIsAProbabilityInOneYear) {
+  const HazardCurve c = read_hazard_curve(write("p.csv", "PGA [g], annual probability of exceedance\n0.1, 0.5\n0.2, 0.01\n"));
+  EXPECT_NEAR(c.annual_frequency[0], std::log(2.0), 1e-15);
+  EXPECT_NEAR(c.annual_frequency[1], -std::log(0.99), 1e-15);
+  // A rise within rounding is read as flat, so the stored curve never rises.
+  const HazardCurve flat = read_hazard_curve(write("f.csv", "PGA [g], annual frequency\n0.1, 1e-3\n0.2, 1.0000000001e-3\n0.3, 1e-4\n"));
+  EXPECT_EQ(flat.annual_frequency[1], flat.annual_frequency[0]);
+  EXPECT_NO_THROW(check_hazard_curve(flat));
+}
+
 TEST_F(HazardCurveFiles, ZerosAtTheTopEndTheCurve) {
   const HazardCurve c = read_hazard_curve(write("z.csv", "PGA [g], annual frequency\n0.1, 1e-3\n0.2, 2e-4\n0.4, 0\n0.8, 0\n"));
   EXPECT_EQ(c.intensity.size(), 2u);

@@ -11,6 +11,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "io/hdf5_file.h"
 #include "support/command_line.h"
 #include "support/temporary_files.h"
 
@@ -70,7 +71,15 @@ TEST_F(RiskCommand, AnEnsembleResultGivesEachFittedLimitStateItsFrequencyInItsOw
   ASSERT_EQ(ok.status, 0) << ok.output;
   const nlohmann::json r = nlohmann::json::parse(testing::file_text(dir_ / "mixed-risk.json"));
   ASSERT_FALSE(r["limit_states"].empty());
+  const hdf5::Group root = hdf5::open_file(result);
   for (const auto& state : r["limit_states"]) {
+    // The median as the file holds it (PGA in m/s^2), in g.
+    const hdf5::Group fit = root.open_group("limit_states").open_group(state["name"].get<std::string>());
+    EXPECT_NEAR(state["median"].get<double>(), fit.double_attribute("median") / 9.80665, 1e-12);
+    EXPECT_DOUBLE_EQ(state["beta_r"].get<double>(), fit.double_attribute("log_std"));
+    // And the answer in the file's /risk group, which leaves the file sealed and whole.
+    const hdf5::Group written = root.open_group("risk").open_group(state["name"].get<std::string>());
+    EXPECT_DOUBLE_EQ(written.double_attribute("mean_annual_frequency"), state["mean_annual_frequency"].get<double>());
     // Against H = 1e-4 a^-2 with beta_U = 0: H(A_m) exp(2 beta^2), from the file's own fit.
     const double m = state["median"].get<double>(), beta = state["beta_r"].get<double>();
     EXPECT_NEAR(state["mean_annual_frequency"].get<double>() / (1e-4 * std::pow(m, -2.0) * std::exp(2.0 * beta * beta)), 1.0,
@@ -81,6 +90,28 @@ TEST_F(RiskCommand, AnEnsembleResultGivesEachFittedLimitStateItsFrequencyInItsOw
   const Outcome refused = run_caskdem("risk " + result.string() + " --hazard " + pgv.string());
   EXPECT_EQ(refused.status, 2);
   EXPECT_THAT(refused.output, HasSubstr("its fragility curves are of PGA but the hazard curve " + pgv.string() + " is of PGV"));
+}
+
+TEST_F(RiskCommand, AModelsFragilityIsSetAgainstTheSiteAsThePrototypes) {
+  // A 1/3 model's PGV capacity of 40 cm/s is a prototype's 40 sqrt(3) cm/s (lengths 1/3,
+  // times 1/sqrt(3)); against H = 1e-4 (v / 1 cm/s)^-2 its frequency is H(40 sqrt 3) e^(2 beta^2).
+  std::ostringstream text;
+  text.precision(17);
+  text << "PGV [cm/s], annual frequency\n";
+  for (int i = 0; i <= 40; ++i) {
+    const double v = 0.1 * std::pow(1e5, i / 40.0);
+    text << v << ", " << 1e-4 * std::pow(v, -2.0) << "\n";
+  }
+  const auto hazard = write("pgv.csv", text.str());
+  const auto json = dir_ / "model.json";
+  const Outcome o = run_caskdem("risk --hazard " + hazard.string() + " --median \"40 cm/s\" --beta 0.3 --similarity 3 --json " +
+                                json.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  const nlohmann::json report = nlohmann::json::parse(testing::file_text(json));
+  const auto& state = report["limit_states"][0];
+  EXPECT_NEAR(state["median"].get<double>(), 40.0 * std::sqrt(3.0), 1e-9);
+  EXPECT_NEAR(state["mean_annual_frequency"].get<double>() / (1e-4 * std::pow(40.0 * std::sqrt(3.0), -2.0) * std::exp(2.0 * 0.09)),
+              1.0, 1e-7);
 }
 
 TEST_F(RiskCommand, ACurveThatStopsShortIsRefusedInOneLine) {
