@@ -3,8 +3,6 @@
 // site's hazard curve (risk/annual_frequency.h), with HCLPF, the probability in N years, the
 // ratio to a target and the intensities that contribute; a JSON and a PNG beside.
 
-#include <unistd.h>
-
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -31,7 +29,7 @@ namespace caskdem::commands {
 namespace {
 
 // The answer into the result file as a /risk group (replacing an earlier one), written back
-// whole and sealed through a temporary file renamed over it, as the ensemble writes it.
+// whole and sealed, as the ensemble writes it.
 void write_risk_group(const std::string& file, const nlohmann::json& report) {
   hdf5::Group root = hdf5::open_sealed_in_memory(file, "a result file of caskdem ensemble");
   root.remove("risk");
@@ -52,10 +50,7 @@ void write_risk_group(const std::string& file, const nlohmann::json& report) {
     }
     g.write("segment_annual_frequency", state["segment_annual_frequency"].get<std::vector<double>>(), "1/yr");
   }
-  const std::vector<char> image = hdf5::file_image(root);
-  const std::filesystem::path temporary = file + ".partial-" + std::to_string(::getpid());
-  hdf5::write_sealed(temporary, image);
-  std::filesystem::rename(temporary, file);
+  hdf5::replace_sealed(file, [&] { return hdf5::file_image(root); });
 }
 
 using risk::IntensityMeasure;

@@ -1,7 +1,5 @@
 #include "ensemble/results.h"
 
-#include <unistd.h>
-
 #include <cmath>
 
 #include "caskdem/build_info.h"
@@ -263,17 +261,8 @@ std::vector<char> result_image(const std::filesystem::path& file, const Ensemble
 
 void write_ensemble_file(const std::filesystem::path& file, const EnsemblePlan& plan, const EnsembleResults& results,
                          const RunInformation& run, const std::vector<LimitStateSummary>* limit_states) {
-  const std::filesystem::path temporary = file.string() + ".partial-" + std::to_string(::getpid());
-  try {
-    hdf5::write_sealed(temporary, result_image(file, plan, results, run, limit_states));
-  } catch (const std::exception& e) {
-    // The previous file (a checkpoint, with every realisation it holds) stays as it was.
-    std::error_code ignored;
-    std::filesystem::remove(temporary, ignored);
-    throw std::runtime_error(std::string(e.what()) + "; " + file.string() +
-                             (std::filesystem::exists(file) ? " is left as it was" : " was not written"));
-  }
-  std::filesystem::rename(temporary, file);
+  // A failed write leaves the previous checkpoint, with every realisation it holds.
+  hdf5::replace_sealed(file, [&] { return result_image(file, plan, results, run, limit_states); });
 }
 
 

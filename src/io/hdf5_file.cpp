@@ -1,5 +1,7 @@
 #include "io/hdf5_file.h"
 
+#include <unistd.h>
+
 #include "core/error.h"
 #include "core/text.h"
 
@@ -314,6 +316,19 @@ Group open_sealed_in_memory(const std::filesystem::path& file, const std::string
   if (!f.valid()) throw InputError(located(file, 0, "cannot be opened as HDF5; expected " + expected));
   Handle root(H5Gopen2(f.get(), "/", H5P_DEFAULT), H5Gclose);
   return Group(std::move(root), "/", file);
+}
+
+void replace_sealed(const std::filesystem::path& file, const std::function<std::vector<char>()>& make_image) {
+  const std::filesystem::path temporary = file.string() + ".partial-" + std::to_string(::getpid());
+  try {
+    write_sealed(temporary, make_image());
+  } catch (const std::exception& e) {
+    std::error_code ignored;
+    std::filesystem::remove(temporary, ignored);
+    throw std::runtime_error(std::string(e.what()) + "; " + file.string() +
+                             (std::filesystem::exists(file) ? " is left as it was" : " was not written"));
+  }
+  std::filesystem::rename(temporary, file);
 }
 
 void check_seal(const std::filesystem::path& file, const std::string& expected) {

@@ -6,6 +6,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -88,6 +89,11 @@ inline constexpr std::size_t kSealBytes = 512;
 Group create_in_memory(const std::string& name);
 std::vector<char> file_image(const Group& root);  // the file after its user block
 void write_sealed(const std::filesystem::path& file, const std::vector<char>& image);
+// Replaces `file` by the sealed image `make_image` builds, written to a temporary file beside
+// it and renamed over it, so the file on disk is always whole. If building or writing fails,
+// the temporary file is removed and the previous file is left as it was; the error (a
+// std::runtime_error) says so.
+void replace_sealed(const std::filesystem::path& file, const std::function<std::vector<char>()>& make_image);
 void check_seal(const std::filesystem::path& file, const std::string& expected);
 // A sealed file, its seal checked, opened in memory to be added to; write it back with
 // file_image and write_sealed (to a temporary file renamed over it, as every sealed write).
