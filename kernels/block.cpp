@@ -58,14 +58,26 @@ LaneBlock::LaneBlock(std::int64_t lanes, int corner_count)
   body_offset_ = parameters_offset_ + LaneParameters<double>::field_count * lane_count_;
   corners_offset_ = body_offset_ + BodyState<double>::field_count * lane_count_;
   response_offset_ = corners_offset_ + std::int64_t(corner_count) * CornerState<double>::field_count * lane_count_;
-  const std::int64_t total = response_offset_ + Response<double>::field_count * lane_count_;
+  clock_offset_ = response_offset_ + Response<double>::field_count * lane_count_;
+  const std::int64_t total = clock_offset_ + lane_count_;
   storage_.assign(static_cast<std::size_t>(total), 0.0);
+  table_index_.assign(static_cast<std::size_t>(lane_count_), 0);
 }
 
 BlockView LaneBlock::view() {
   double* base = storage_.data();
-  return {lane_count_, base + parameters_offset_, base + body_offset_, base + corners_offset_, base + response_offset_};
+  return {lane_count_,           base + parameters_offset_, base + body_offset_, base + corners_offset_,
+          base + response_offset_, base + clock_offset_,      table_index_.data()};
 }
+
+void LaneBlock::set_clock(std::int64_t lane, double step, std::int64_t table_index) {
+  storage_[clock_offset_ + lane] = step;
+  table_index_[lane] = table_index;
+}
+
+double LaneBlock::clock(std::int64_t lane) const { return storage_[clock_offset_ + lane]; }
+
+double LaneBlock::status(std::int64_t lane) const { return storage_[response_offset_ + lane]; }
 
 void LaneBlock::set_lane(std::int64_t lane, const LaneParameters<double>& parameters, const BodyState<double>& body,
                          const CornerState<double>* corners, const Response<double>& response) {
@@ -107,7 +119,10 @@ void LaneBlock::pad_from(std::int64_t source_lane) {
   Response<double> response;
   get_lane(source_lane, &parameters, &body, corners, &response);
   response.status = double(LaneStatus::tipped_over);  // any stopped status: the lane is never advanced
-  for (std::int64_t lane = used_lanes_; lane < lane_count_; ++lane) set_lane(lane, parameters, body, corners, response);
+  for (std::int64_t lane = used_lanes_; lane < lane_count_; ++lane) {
+    set_lane(lane, parameters, body, corners, response);
+    set_clock(lane, clock(source_lane), table_index_[source_lane]);
+  }
 }
 
 bool LaneBlock::all_stopped() const {

@@ -35,6 +35,8 @@ struct BlockView {
   double* body = nullptr;        // [field][lane]
   double* corners = nullptr;     // [corner][field][lane]
   double* response = nullptr;    // [field][lane]
+  double* clock = nullptr;       // [lane]: the lane's own step number (a whole number)
+  std::int64_t* table_index = nullptr;  // [lane]: where the lane reads the table motion
 };
 
 // Lanes are padded to a multiple of the widest batch (8 doubles, one AVX-512 register).
@@ -55,6 +57,11 @@ class LaneBlock {
                 CornerState<double>* corners, Response<double>* response) const;
   // Padding lanes copy a real lane and are marked stopped, so they cost nothing but never divide by zero.
   void pad_from(std::int64_t source_lane);
+  // A lane's clock: the step it is at (0 in a fresh block) and the index at which it reads the
+  // table motion (see advance_block). Both advance by one per step.
+  void set_clock(std::int64_t lane, double step, std::int64_t table_index);
+  double clock(std::int64_t lane) const;
+  double status(std::int64_t lane) const;  // LaneStatus as a number
 
   BlockView view();
   bool all_stopped() const;
@@ -64,12 +71,18 @@ class LaneBlock {
   std::int64_t used_lanes_;
   int corner_count_;
   std::vector<double, xsimd::aligned_allocator<double, 64>> storage_;
-  std::int64_t parameters_offset_, body_offset_, corners_offset_, response_offset_;
+  std::vector<std::int64_t, xsimd::aligned_allocator<std::int64_t, 64>> table_index_;
+  std::int64_t parameters_offset_, body_offset_, corners_offset_, response_offset_, clock_offset_;
 };
 
-// Advances every lane of the block by step_count steps from step first_step. table_horizontal
-// and table_vertical hold the table accelerations at those steps (shared by the block's lanes;
-// each lane scales them by its own factors).
+// Advances every lane of the block by step_count steps. Each lane runs on its own clock: at
+// its step c it is at time c dt and reads the table accelerations at [i - first_step], i its
+// table index, and both advance by one per step. In a fresh block every lane's clock and
+// index are 0, so the lanes run in lockstep and the tables hold steps first_step ..
+// first_step + step_count - 1 (calls in turn, first_step advancing). A block whose lanes are
+// replaced as they stop (ensemble/runner.h) gives each new lane clock 0 and the index of its
+// motion's first step in one table of whole runs, and passes first_step = 0. Each lane scales
+// the accelerations by its own factors; table_vertical may be null (no vertical component).
 void advance_block(InstructionSet isa, const Model& model, LaneBlock& block, const double* table_horizontal,
                    const double* table_vertical, std::int64_t first_step, int step_count);
 

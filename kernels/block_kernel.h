@@ -48,12 +48,26 @@ void advance_lanes(const Model& model, BlockView block, const double* table_hori
     for (int k = 0; k < model.corner_count; ++k) {
       corners[k] = load_fields<T, CornerState<T>>(block.corners + k * corner_stride, stride, lane_index);
     }
+    // Each lane on its own clock (kernels/block.h): its time, and its place in the table motion.
+    T clock = lane::load<T>(block.clock + lane_index);
+    lane::Index<T> table_index = lane::load_index<T>(block.table_index + lane_index);
+    const lane::Index<T> first = lane::Index<T>(first_step);
+    const lane::Index<T> one_index = lane::Index<T>(1);
+    const T one = lane::broadcast<T>(1.0);
+    const T dt = lane::broadcast<T>(model.time_step);
+    const T no_vertical = lane::broadcast<T>(0.0);
     for (int n = 0; n < step_count; ++n) {
-      const double time = static_cast<double>(first_step + n) * model.time_step;
-      step<Law>(model, parameters, table_horizontal[n], table_vertical[n], time, body, corners, response);
+      const lane::Index<T> at = table_index - first;
+      const T horizontal = lane::gather<T>(table_horizontal, at);
+      const T vertical = table_vertical ? lane::gather<T>(table_vertical, at) : no_vertical;
+      step<Law>(model, parameters, horizontal, vertical, clock * dt, body, corners, response);
+      clock = clock + one;
+      table_index = table_index + one_index;
       // Tipped-over lanes are frozen; once the whole batch has stopped there is nothing to advance.
       if (lane::all(response.status != lane::broadcast<T>(0.0))) break;
     }
+    lane::store(block.clock + lane_index, clock);
+    lane::store_index(block.table_index + lane_index, table_index);
     store_fields<T>(body, block.body, stride, lane_index);
     for (int k = 0; k < model.corner_count; ++k) {
       store_fields<T>(corners[k], block.corners + k * corner_stride, stride, lane_index);

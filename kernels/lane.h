@@ -25,17 +25,23 @@ struct Traits;
 template <>
 struct Traits<double> {
   using Mask = bool;
+  using Index = std::int64_t;
   static constexpr std::size_t width = 1;
 };
 
 template <class Arch>
 struct Traits<xsimd::batch<double, Arch>> {
   using Mask = xsimd::batch_bool<double, Arch>;
+  using Index = xsimd::batch<std::int64_t, Arch>;
   static constexpr std::size_t width = xsimd::batch<double, Arch>::size;
 };
 
 template <class T>
 using Mask = typename Traits<T>::Mask;
+
+// One array index per lane (a lane's position in a table of the table motion).
+template <class T>
+using Index = typename Traits<T>::Index;
 
 template <class T>
 inline constexpr std::size_t width = Traits<T>::width;
@@ -134,6 +140,30 @@ inline T load(const double* field) {
   }
 }
 inline void store(double* field, double value) { *field = value; }
+
+// Each lane's index array entry, and each lane's value of table[index]: lanes at different
+// steps of their runs read the table motion at their own step.
+template <class T>
+inline Index<T> load_index(const std::int64_t* field) {
+  if constexpr (std::is_same_v<T, double>) {
+    return *field;
+  } else {
+    return Index<T>::load_aligned(field);
+  }
+}
+inline void store_index(std::int64_t* field, std::int64_t value) { *field = value; }
+template <class A>
+inline void store_index(std::int64_t* field, const xsimd::batch<std::int64_t, A>& value) {
+  value.store_aligned(field);
+}
+template <class T>
+inline T gather(const double* table, const Index<T>& index) {
+  if constexpr (std::is_same_v<T, double>) {
+    return table[index];
+  } else {
+    return T::gather(table, index);
+  }
+}
 
 template <class T>
 inline T clamp(const T& value, const T& low, const T& high) {

@@ -25,8 +25,8 @@
 namespace caskdem::kernels {
 
 template <FrictionLaw Law, class T>
-inline void step(const Model& model, const LaneParameters<T>& p, double table_horizontal, double table_vertical,
-                 double time, BodyState<T>& body, CornerState<T>* corners, Response<T>& response,
+inline void step(const Model& model, const LaneParameters<T>& p, const T& table_horizontal, const T& table_vertical,
+                 const T& time, BodyState<T>& body, CornerState<T>* corners, Response<T>& response,
                  ContactForces<T>* forces = nullptr) {
   using lane::broadcast;
   using lane::select;
@@ -95,7 +95,7 @@ inline void step(const Model& model, const LaneParameters<T>& p, double table_ho
     verdict = select(tipped, broadcast<T>(double(LaneStatus::tipped_over)), verdict);
     verdict = select(!finite, broadcast<T>(double(LaneStatus::non_finite)), verdict);
     r.status = select(stopping, verdict, r.status);
-    r.end_time = select(stopping, broadcast<T>(time), r.end_time);
+    r.end_time = select(stopping, time, r.end_time);
   }
   const auto running = r.status == zero;
 
@@ -126,12 +126,12 @@ inline void step(const Model& model, const LaneParameters<T>& p, double table_ho
   // When a tipping cask passed its stability angle for the last time.
   const auto above = abs_rotation > broadcast<T>(model.stability_angle);
   const auto rose_past_alpha = above && (r.above_stability < broadcast<T>(0.5));
-  if (lane::any(rose_past_alpha)) r.instability_time = select(rose_past_alpha, broadcast<T>(time), r.instability_time);
+  if (lane::any(rose_past_alpha)) r.instability_time = select(rose_past_alpha, time, r.instability_time);
   r.above_stability = lane::as_number<T>(above);
 
   // ---- advance to t_{n+1} (stopped lanes keep their state) --------------------------------
-  const T accel_x = force_x * p.inverse_mass - p.horizontal_scale * broadcast<T>(table_horizontal);
-  const T accel_y = force_y * p.inverse_mass - (broadcast<T>(model.gravity) + p.vertical_scale * broadcast<T>(table_vertical));
+  const T accel_x = force_x * p.inverse_mass - p.horizontal_scale * table_horizontal;
+  const T accel_y = force_y * p.inverse_mass - (broadcast<T>(model.gravity) + p.vertical_scale * table_vertical);
   // Out-of-plane losses (wobbling, top-spinning of a real cylinder) as a damping couple
   // -I 2 zeta_w p (|theta| / alpha) omega whose ratio grows with the amplitude: zeta_w at
   // |theta| = alpha, zero when it stands.

@@ -80,30 +80,32 @@ ExecuteReport execute_ensemble_distributed(const EnsemblePlan& plan, const Execu
   const std::int64_t first = total * mpi.rank() / mpi.size();
   const std::int64_t last = total * (mpi.rank() + 1) / mpi.size();
   std::vector<std::int64_t> mine(pending.begin() + first, pending.begin() + last);
-  // Within a rank, blocks of neighbouring indices (one stripe) again: lanes of one intensity
-  // tip over together, so whole batches stop early.
   std::sort(mine.begin(), mine.end());
-  const std::vector<WorkBlock> blocks = make_blocks(plan, mine, plan.spec().block_lanes);
+  const MotionTables tables(plan);
+  RunOptions run;
+  run.isa = options.isa;
+  run.threads = file.run().threads;
+  run.lanes = plan.spec().block_lanes;
 
-  // Rounds of a few blocks per thread: enough work between gathers to keep every thread busy,
-  // often enough for progress and checkpoints.
-  const int per_round = 4 * file.run().threads;
-  int rounds = static_cast<int>((blocks.size() + per_round - 1) / per_round);
+  // Rounds of a few blocks' worth of realisations per thread: enough work between gathers to
+  // keep every thread busy, often enough for progress and checkpoints.
+  const std::size_t per_round = std::size_t(4) * file.run().threads * plan.spec().block_lanes;
+  int rounds = static_cast<int>((mine.size() + per_round - 1) / per_round);
   MPI_Allreduce(MPI_IN_PLACE, &rounds, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
 
   Progress progress(results.size, results.completed_count(), root && options.progress);
   ExecuteReport report;
   std::vector<int> counts(mpi.size()), displacements(mpi.size());
   for (int round = 0; round < rounds; ++round) {
-    const std::size_t begin = std::min(blocks.size(), static_cast<std::size_t>(round) * per_round);
-    const std::size_t end = std::min(blocks.size(), begin + per_round);
-    const std::vector<WorkBlock> these(blocks.begin() + begin, blocks.begin() + end);
+    const std::size_t begin = std::min(mine.size(), static_cast<std::size_t>(round) * per_round);
+    const std::size_t end = std::min(mine.size(), begin + per_round);
+    const std::vector<std::int64_t> these(mine.begin() + begin, mine.begin() + end);
     std::vector<double> packed;
     try {
-      run_blocks(plan, these, options.isa, file.run().threads,
-                 [&](const WorkBlock& block, const std::vector<RealisationOutcome>& outcomes) {
-                   for (std::size_t l = 0; l < block.indices.size(); ++l) pack(block.indices[l], outcomes[l], packed);
-                 });
+      run_realisations(plan, tables, these, run,
+                       [&](const std::vector<std::int64_t>& indices, const std::vector<RealisationOutcome>& outcomes) {
+                         for (std::size_t k = 0; k < indices.size(); ++k) pack(indices[k], outcomes[k], packed);
+                       });
     } catch (const std::exception& e) {
       mpi.abort(e.what());
     }

@@ -43,20 +43,24 @@ ExecuteReport execute_ensemble(const EnsemblePlan& plan, const ExecuteOptions& o
   // The file exists, valid and resumable, from the first moment.
   file.write(nullptr);
 
-  const std::vector<WorkBlock> blocks = make_blocks(plan, results.pending(), plan.spec().block_lanes);
+  const MotionTables tables(plan);
+  RunOptions run;
+  run.isa = options.isa;
+  run.threads = file.run().threads;
+  run.lanes = plan.spec().block_lanes;
   Progress progress(results.size, results.completed_count(), options.progress);
   std::int64_t done = results.completed_count();
   ExecuteReport report;
-  run_blocks(plan, blocks, options.isa, file.run().threads,
-             [&](const WorkBlock& block, const std::vector<RealisationOutcome>& outcomes) {
-               for (std::size_t l = 0; l < block.indices.size(); ++l) {
-                 results.record(block.indices[l], outcomes[l], plan.stability_angle());
-               }
-               done += static_cast<std::int64_t>(block.indices.size());
-               report.realisations_run += static_cast<std::int64_t>(block.indices.size());
-               progress.update(done);
-               file.checkpoint_if_due();
-             });
+  run_realisations(
+      plan, tables, results.pending(), run,
+      [&](const std::vector<std::int64_t>& indices, const std::vector<RealisationOutcome>& outcomes) {
+        for (std::size_t k = 0; k < indices.size(); ++k) results.record(indices[k], outcomes[k], plan.stability_angle());
+        done += static_cast<std::int64_t>(indices.size());
+        report.realisations_run += static_cast<std::int64_t>(indices.size());
+        progress.update(done);
+        file.checkpoint_if_due();
+      },
+      &report.occupancy);
   progress.finish();
   file.finish(report);
   return report;

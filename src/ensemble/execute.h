@@ -10,6 +10,7 @@
 #include "ensemble/analysis.h"
 #include "ensemble/plan.h"
 #include "ensemble/results.h"
+#include "ensemble/runner.h"
 
 namespace caskdem {
 
@@ -25,6 +26,7 @@ struct ExecuteReport {
   std::int64_t realisations_run = 0;  // in this invocation
   double wall_seconds = 0.0;          // in total, over resumed runs
   std::vector<LimitStateSummary> limit_states;
+  LaneOccupancy occupancy;            // of this invocation's lanes (ensemble/runner.h)
 };
 
 ExecuteReport execute_ensemble(const EnsemblePlan& plan, const ExecuteOptions& options);

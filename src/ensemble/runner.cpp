@@ -1,6 +1,7 @@
 #include "ensemble/runner.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <exception>
 #include <mutex>
@@ -12,56 +13,64 @@
 namespace caskdem {
 
 namespace {
-constexpr int kChunk = 2048;  // steps of table motion sampled at a time (16 kB)
-}
+constexpr int kChunk = 2048;  // steps between harvests (and of table motion sampled at a time in lockstep)
 
-std::vector<WorkBlock> make_blocks(const EnsemblePlan& plan, const std::vector<std::int64_t>& realisations, int lanes) {
-  std::vector<std::vector<std::int64_t>> by_motion(plan.motion_count());
-  for (std::int64_t i : realisations) by_motion[plan.realisation(i).motion].push_back(i);
-  std::vector<WorkBlock> blocks;
-  for (int m = 0; m < plan.motion_count(); ++m) {
-    const auto& list = by_motion[m];
-    for (std::size_t first = 0; first < list.size(); first += static_cast<std::size_t>(lanes)) {
-      WorkBlock block;
-      block.motion = m;
-      block.indices.assign(list.begin() + first, list.begin() + std::min(list.size(), first + lanes));
-      blocks.push_back(std::move(block));
-    }
+int batch_width(InstructionSet isa) {
+  switch (isa == InstructionSet::automatic ? best_instruction_set() : isa) {
+    case InstructionSet::avx512f: return 8;
+    case InstructionSet::avx2: return 4;
+    case InstructionSet::sse2: return 2;
+    default: return 1;
   }
-  return blocks;
 }
 
-std::vector<RealisationOutcome> run_block(const EnsemblePlan& plan, const WorkBlock& work, InstructionSet isa) {
-  const Model& model = plan.model();
-  const auto lanes = static_cast<std::int64_t>(work.indices.size());
-  LaneBlock block(lanes, model.corner_count);
-  std::vector<LaneParameters<double>> parameters(lanes);
-  for (std::int64_t l = 0; l < lanes; ++l) {
-    const RealisationInput in = plan.realisation(work.indices[l]);
-    parameters[l] = lane_parameters(model, in.parameters);
-    const BodyState<double> body = rest_state(model, parameters[l]);
+// A block's lanes and the realisations they hold.
+class Lanes {
+ public:
+  Lanes(const EnsemblePlan& plan, int width)
+      : plan_(plan), block_(width, plan.model().corner_count), held_(width, -1), motion_(width, 0), parameters_(width) {}
+
+  LaneBlock& block() { return block_; }
+  int width() const { return static_cast<int>(held_.size()); }
+  bool holds(int lane) const { return held_[lane] >= 0; }
+  std::int64_t realisation(int lane) const { return held_[lane]; }
+  int motion(int lane) const { return motion_[lane]; }
+  bool running(int lane) const { return holds(lane) && block_.status(lane) == 0.0; }
+
+  void load(int lane, std::int64_t index, std::int64_t table_index) {
+    const Model& model = plan_.model();
+    const RealisationInput in = plan_.realisation(index);
+    parameters_[lane] = lane_parameters(model, in.parameters);
+    const BodyState<double> body = rest_state(model, parameters_[lane]);
     const CornerState<double> corners[kMaxCorners] = {};
-    block.set_lane(l, parameters[l], body, corners, initial_response(parameters[l], body));
-  }
-  if (block.lane_count() > lanes) block.pad_from(0);
-
-  const motion::TableMotion& motion = plan.motion(work.motion);
-  const auto steps = static_cast<std::int64_t>(std::ceil(plan.run_duration(work.motion) / model.time_step));
-  std::vector<double> horizontal(kChunk);
-  const std::vector<double> vertical(kChunk, 0.0);
-  for (std::int64_t first = 0; first < steps && !block.all_stopped(); first += kChunk) {
-    const int count = static_cast<int>(std::min<std::int64_t>(kChunk, steps - first));
-    motion::sample_acceleration(motion, model.time_step, first, count, horizontal.data());
-    advance_block(isa, model, block, horizontal.data(), vertical.data(), first, count);
+    block_.set_lane(lane, parameters_[lane], body, corners, initial_response(parameters_[lane], body));
+    block_.set_clock(lane, 0.0, table_index);
+    held_[lane] = index;
+    motion_[lane] = in.motion;
+    loaded_[lane] = true;
   }
 
-  std::vector<RealisationOutcome> outcomes(lanes);
-  for (std::int64_t l = 0; l < lanes; ++l) {
+  // Nothing left to load: the lane keeps its last realisation's numbers (lane 0's if it never
+  // held one), marked stopped so that it is never advanced and never divides by zero.
+  void empty(int lane) {
+    LaneParameters<double> parameters;
+    BodyState<double> body;
+    CornerState<double> corners[kMaxCorners];
+    Response<double> response;
+    block_.get_lane(loaded_[lane] ? lane : 0, &parameters, &body, corners, &response);
+    response.status = double(LaneStatus::tipped_over);
+    block_.set_lane(lane, parameters, body, corners, response);
+    held_[lane] = -1;
+  }
+
+  // The lane's result: its frozen state if it stopped, else its state at the end of its run.
+  RealisationOutcome harvest(int lane, std::int64_t steps) {
+    const Model& model = plan_.model();
     BodyState<double> body;
     Response<double> response;
-    block.get_lane(l, nullptr, &body, nullptr, &response);
-    kernels::finish(model, parameters[l], body, static_cast<double>(steps) * model.time_step, response);
-    RealisationOutcome& o = outcomes[l];
+    block_.get_lane(lane, nullptr, &body, nullptr, &response);
+    kernels::finish(model, parameters_[lane], body, static_cast<double>(steps) * model.time_step, response);
+    RealisationOutcome o;
     o.status = static_cast<LaneStatus>(static_cast<int>(response.status));
     o.max_abs_rotation = response.max_abs_rotation;
     o.max_abs_slide = response.max_abs_slide;
@@ -70,31 +79,209 @@ std::vector<RealisationOutcome> run_block(const EnsemblePlan& plan, const WorkBl
     o.impacts = response.impacts;
     o.end_time = response.end_time;
     o.instability_time = o.status == LaneStatus::tipped_over ? response.instability_time : -1.0;
+    return o;
   }
-  return outcomes;
+
+  // Lanes that hold nothing (and the block's padding) read the start of the table: a stopped
+  // lane's index still advances with its batch, and must stay inside the table.
+  void park_idle() {
+    for (std::int64_t l = 0; l < block_.lane_count(); ++l) {
+      if (l >= width() || !holds(static_cast<int>(l))) block_.set_clock(l, 0.0, 0);
+    }
+  }
+
+  // Lane-steps of the next `steps` steps: every lane of a SIMD batch that has a running lane
+  // is computed, running or not.
+  void count(int steps, int batch, bool waiting, LaneOccupancy& occupancy) const {
+    for (int first = 0; first < block_.lane_count(); first += batch) {
+      int running_lanes = 0;
+      for (int l = first; l < std::min<int>(first + batch, width()); ++l) running_lanes += running(l);
+      if (running_lanes == 0) continue;
+      occupancy.lane_steps += double(batch) * steps;
+      occupancy.stopped_lane_steps += double(batch - running_lanes) * steps;
+      if (waiting) occupancy.stopped_while_waiting += double(batch - running_lanes) * steps;
+    }
+  }
+
+ private:
+  const EnsemblePlan& plan_;
+  LaneBlock block_;
+  std::vector<std::int64_t> held_;
+  std::vector<int> motion_;
+  std::vector<LaneParameters<double>> parameters_;
+  std::vector<bool> loaded_ = std::vector<bool>(held_.size(), false);
+};
+
+// What the threads share: the queue of realisations, the sink, the first failure.
+struct Shared {
+  const EnsemblePlan& plan;
+  const MotionTables& tables;
+  const RunOptions& options;
+  const OutcomeSink& on_done;
+  std::atomic<std::size_t> next{0};  // the next realisation (refilled) or block (lockstep) to start
+  std::size_t blocks = 0;            // lockstep
+  std::atomic<bool> failed{false};
+  std::mutex mutex;
+  std::exception_ptr failure;
+  LaneOccupancy occupancy;
+
+  void report(const std::vector<std::int64_t>& indices, const std::vector<RealisationOutcome>& outcomes,
+              const LaneOccupancy& counted) {
+    std::lock_guard<std::mutex> lock(mutex);
+    occupancy.lane_steps += counted.lane_steps;
+    occupancy.stopped_lane_steps += counted.stopped_lane_steps;
+    occupancy.stopped_while_waiting += counted.stopped_while_waiting;
+    if (failure || indices.empty()) return;
+    on_done(indices, outcomes);
+  }
+  void fail() {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!failure) failure = std::current_exception();
+    failed = true;
+  }
+};
+
+// One thread's block with refill: lanes of any motion, each on its own clock, reading the
+// whole-run table; a lane that stopped or ran out its steps is replaced at the end of the chunk.
+void run_refilled(Shared& shared, const std::vector<std::int64_t>& queue) {
+  const MotionTables& tables = shared.tables;
+  const int batch = batch_width(shared.options.isa);
+  auto claim = [&]() -> std::int64_t {
+    const std::size_t k = shared.next.fetch_add(1);
+    return k < queue.size() ? queue[k] : -1;
+  };
+  const std::int64_t first = claim();
+  if (first < 0) return;
+  Lanes lanes(shared.plan, std::max(1, std::min<int>(shared.options.lanes, static_cast<int>(queue.size()))));
+  lanes.load(0, first, tables.offset(shared.plan.realisation(first).motion));
+  for (int l = 1; l < lanes.width(); ++l) {
+    const std::int64_t i = claim();
+    if (i < 0) break;
+    lanes.load(l, i, tables.offset(shared.plan.realisation(i).motion));
+  }
+  for (int l = 1; l < lanes.width(); ++l) {
+    if (!lanes.holds(l)) lanes.empty(l);
+  }
+  if (lanes.block().lane_count() > lanes.width()) lanes.block().pad_from(0);
+  std::vector<std::int64_t> indices;
+  std::vector<RealisationOutcome> outcomes;
+  while (!shared.failed) {
+    indices.clear();
+    outcomes.clear();
+    for (int l = 0; l < lanes.width(); ++l) {
+      if (!lanes.holds(l)) continue;
+      const std::int64_t steps = tables.steps(lanes.motion(l));
+      if (lanes.running(l) && lanes.block().clock(l) < static_cast<double>(steps)) continue;
+      indices.push_back(lanes.realisation(l));
+      outcomes.push_back(lanes.harvest(l, steps));
+      const std::int64_t i = claim();
+      if (i >= 0) {
+        lanes.load(l, i, tables.offset(shared.plan.realisation(i).motion));
+      } else {
+        lanes.empty(l);
+      }
+    }
+    lanes.park_idle();
+    // The chunk ends where the first running lane ends its run, so that none runs past it.
+    std::int64_t chunk = kChunk;
+    bool any = false;
+    for (int l = 0; l < lanes.width(); ++l) {
+      if (!lanes.running(l)) continue;
+      any = true;
+      chunk = std::min(chunk, tables.steps(lanes.motion(l)) - static_cast<std::int64_t>(lanes.block().clock(l)));
+    }
+    LaneOccupancy counted;
+    if (any) lanes.count(static_cast<int>(chunk), batch, shared.next.load() < queue.size(), counted);
+    shared.report(indices, outcomes, counted);
+    if (!any) break;
+    advance_block(shared.options.isa, shared.plan.model(), lanes.block(), tables.data(), nullptr, 0,
+                  static_cast<int>(chunk));
+  }
 }
 
-void run_blocks(const EnsemblePlan& plan, const std::vector<WorkBlock>& blocks, InstructionSet isa, int threads,
-                const std::function<void(const WorkBlock&, const std::vector<RealisationOutcome>&)>& on_done) {
-  std::mutex done_mutex;
-  std::exception_ptr failure;
-  const auto count = static_cast<std::int64_t>(blocks.size());
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (std::int64_t b = 0; b < count; ++b) {
-    {
-      std::lock_guard<std::mutex> lock(done_mutex);
-      if (failure) continue;  // stop starting blocks once something failed
-    }
-    try {
-      const std::vector<RealisationOutcome> outcomes = run_block(plan, blocks[b], isa);
-      std::lock_guard<std::mutex> lock(done_mutex);
-      if (!failure) on_done(blocks[b], outcomes);
-    } catch (...) {
-      std::lock_guard<std::mutex> lock(done_mutex);
-      if (!failure) failure = std::current_exception();
+// One block of one motion in lockstep, on table motion sampled chunk by chunk, until all its
+// lanes have stopped or run out their steps.
+void run_lockstep(Shared& shared, int motion, const std::vector<std::int64_t>& indices) {
+  const EnsemblePlan& plan = shared.plan;
+  const Model& model = plan.model();
+  const int batch = batch_width(shared.options.isa);
+  Lanes lanes(plan, static_cast<int>(indices.size()));
+  for (int l = 0; l < lanes.width(); ++l) lanes.load(l, indices[l], 0);
+  if (lanes.block().lane_count() > lanes.width()) lanes.block().pad_from(0);
+  const std::int64_t steps = shared.tables.steps(motion);
+  std::vector<double> horizontal(kChunk);
+  LaneOccupancy counted;
+  for (std::int64_t first = 0; first < steps && !lanes.block().all_stopped() && !shared.failed; first += kChunk) {
+    const int count = static_cast<int>(std::min<std::int64_t>(kChunk, steps - first));
+    motion::sample_acceleration(plan.motion(motion), model.time_step, first, count, horizontal.data());
+    lanes.count(count, batch, shared.next.load() < shared.blocks, counted);
+    advance_block(shared.options.isa, model, lanes.block(), horizontal.data(), nullptr, first, count);
+  }
+  std::vector<RealisationOutcome> outcomes;
+  for (int l = 0; l < lanes.width(); ++l) outcomes.push_back(lanes.harvest(l, steps));
+  shared.report(indices, outcomes, counted);
+}
+
+}  // namespace
+
+MotionTables::MotionTables(const EnsemblePlan& plan, std::int64_t budget_bytes) {
+  std::int64_t total = 0;
+  for (int m = 0; m < plan.motion_count(); ++m) {
+    offset_.push_back(total);
+    steps_.push_back(static_cast<std::int64_t>(std::ceil(plan.run_duration(m) / plan.model().time_step)));
+    total += steps_.back();
+  }
+  if (double(total) * sizeof(double) > double(budget_bytes)) return;
+  table_.resize(static_cast<std::size_t>(total));
+  for (int m = 0; m < plan.motion_count(); ++m) {
+    for (std::int64_t first = 0; first < steps_[m]; first += kChunk) {
+      const int count = static_cast<int>(std::min<std::int64_t>(kChunk, steps_[m] - first));
+      motion::sample_acceleration(plan.motion(m), plan.model().time_step, first, count, &table_[offset_[m] + first]);
     }
   }
-  if (failure) std::rethrow_exception(failure);
+}
+
+void run_realisations(const EnsemblePlan& plan, const MotionTables& tables, const std::vector<std::int64_t>& realisations,
+                      const RunOptions& options, const OutcomeSink& on_done, LaneOccupancy* occupancy) {
+  Shared shared{plan, tables, options, on_done};
+  if (options.refill && tables.whole()) {
+#pragma omp parallel num_threads(options.threads)
+    {
+      try {
+        run_refilled(shared, realisations);
+      } catch (...) {
+        shared.fail();
+      }
+    }
+  } else {
+    // Blocks of neighbouring realisations of one motion: lanes of one intensity tend to stop together.
+    std::vector<std::vector<std::int64_t>> by_motion(plan.motion_count());
+    for (std::int64_t i : realisations) by_motion[plan.realisation(i).motion].push_back(i);
+    std::vector<std::pair<int, std::vector<std::int64_t>>> blocks;
+    const auto width = static_cast<std::size_t>(std::max(1, options.lanes));
+    for (int m = 0; m < plan.motion_count(); ++m) {
+      const auto& list = by_motion[m];
+      for (std::size_t first = 0; first < list.size(); first += width) {
+        blocks.push_back({m, {list.begin() + first, list.begin() + std::min(list.size(), first + width)}});
+      }
+    }
+    shared.blocks = blocks.size();
+#pragma omp parallel num_threads(options.threads)
+    for (std::size_t b = shared.next.fetch_add(1); b < blocks.size(); b = shared.next.fetch_add(1)) {
+      if (shared.failed) break;  // stop starting blocks once something failed
+      try {
+        run_lockstep(shared, blocks[b].first, blocks[b].second);
+      } catch (...) {
+        shared.fail();
+      }
+    }
+  }
+  if (occupancy) {
+    occupancy->lane_steps += shared.occupancy.lane_steps;
+    occupancy->stopped_lane_steps += shared.occupancy.stopped_lane_steps;
+    occupancy->stopped_while_waiting += shared.occupancy.stopped_while_waiting;
+  }
+  if (shared.failure) std::rethrow_exception(shared.failure);
 }
 
 }  // namespace caskdem

@@ -1,8 +1,16 @@
 #pragma once
-// Running realisations: blocks of lanes that share a motion, advanced by the SIMD kernel
-// (kernels/block.h) chunk by chunk, threaded with OpenMP across blocks. A lane that tips
-// over, leaves the floor or goes non-finite is frozen and flagged by the kernel; a block
-// ends early when all its lanes have stopped.
+// Running realisations: blocks of SIMD lanes (kernels/block.h), one block per OpenMP thread,
+// each lane one realisation. A lane that tips over, leaves the floor, slides off or reaches
+// the end of its run is harvested at the end of the chunk of steps it stopped in and
+// replaced by the next pending realisation, of any motion, which starts on its own clock at
+// step 0: a block's width stays busy until the work runs out, and no lane rides on stopped.
+// The lanes read one table of every motion's whole run (MotionTables). A realisation's
+// result does not depend on the lane, block, thread or the time it started: it sees the
+// same table values at the same steps of its own clock.
+//
+// When the whole-run table would not fit its memory budget, blocks of one motion run in
+// lockstep on tables sampled chunk by chunk instead, each until all its lanes have stopped
+// (the same results, more lane-steps on stopped lanes).
 
 #include <cstdint>
 #include <functional>
@@ -23,21 +31,46 @@ struct RealisationOutcome {
   double instability_time = -1.0;
 };
 
-struct WorkBlock {
-  int motion = 0;
-  std::vector<std::int64_t> indices;  // realisations, ascending
+// The horizontal table acceleration of every motion at every step of its run (steps 0 ..
+// steps(m) - 1 of motion m at offset(m)), end to end, or nothing when that exceeds the budget.
+class MotionTables {
+ public:
+  static constexpr std::int64_t kDefaultBudgetBytes = std::int64_t(1) << 29;  // 512 MiB
+  explicit MotionTables(const EnsemblePlan& plan, std::int64_t budget_bytes = kDefaultBudgetBytes);
+  bool whole() const { return !table_.empty(); }
+  const double* data() const { return table_.data(); }
+  std::int64_t offset(int motion) const { return offset_[motion]; }
+  std::int64_t steps(int motion) const { return steps_[motion]; }
+
+ private:
+  std::vector<std::int64_t> offset_, steps_;
+  std::vector<double> table_;
 };
 
-// Groups realisations by motion into blocks of at most `lanes` lanes.
-std::vector<WorkBlock> make_blocks(const EnsemblePlan& plan, const std::vector<std::int64_t>& realisations, int lanes);
+struct RunOptions {
+  InstructionSet isa = InstructionSet::automatic;
+  int threads = 1;
+  int lanes = 64;       // per block
+  bool refill = true;   // false: blocks of one motion in lockstep (the results are the same)
+};
 
-// Runs one block to its end; outcomes in the order of block.indices.
-std::vector<RealisationOutcome> run_block(const EnsemblePlan& plan, const WorkBlock& block, InstructionSet isa);
+// Lane-steps the kernel was asked to advance, and those of them on lanes that had already
+// stopped (or held nothing), counted per chunk over each SIMD batch with a running lane; and
+// of those, the ones spent while realisations were still waiting to start (none, refilled).
+struct LaneOccupancy {
+  double lane_steps = 0.0;
+  double stopped_lane_steps = 0.0;
+  double stopped_while_waiting = 0.0;
+  double stopped_fraction() const { return lane_steps > 0.0 ? stopped_lane_steps / lane_steps : 0.0; }
+};
 
-// Runs the blocks on `threads` OpenMP threads (dynamic schedule). on_done is called, one
-// call at a time, as each block finishes; it may throw to stop the run (the exception is
-// rethrown here once the running blocks have finished).
-void run_blocks(const EnsemblePlan& plan, const std::vector<WorkBlock>& blocks, InstructionSet isa, int threads,
-                const std::function<void(const WorkBlock&, const std::vector<RealisationOutcome>&)>& on_done);
+using OutcomeSink = std::function<void(const std::vector<std::int64_t>& indices,
+                                       const std::vector<RealisationOutcome>& outcomes)>;
+
+// Runs the realisations. on_done is called, one call at a time, with realisations as they
+// finish; it may throw to stop the run (the exception is rethrown here once the threads have
+// stopped). Adds to *occupancy when given.
+void run_realisations(const EnsemblePlan& plan, const MotionTables& tables, const std::vector<std::int64_t>& realisations,
+                      const RunOptions& options, const OutcomeSink& on_done, LaneOccupancy* occupancy = nullptr);
 
 }  // namespace caskdem

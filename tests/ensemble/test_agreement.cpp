@@ -22,10 +22,12 @@ TEST(Agreement, EveryLaneEqualsTheDeterministicRun) {
   std::vector<std::int64_t> all(plan.size());
   for (std::int64_t i = 0; i < plan.size(); ++i) all[i] = i;
   std::vector<RealisationOutcome> wide(plan.size());
-  for (const WorkBlock& block : make_blocks(plan, all, 64)) {
-    const auto outcomes = run_block(plan, block, InstructionSet::automatic);
-    for (std::size_t l = 0; l < block.indices.size(); ++l) wide[block.indices[l]] = outcomes[l];
-  }
+  RunOptions options;
+  options.lanes = 64;
+  run_realisations(plan, MotionTables(plan), all, options,
+                   [&](const std::vector<std::int64_t>& done, const std::vector<RealisationOutcome>& outcomes) {
+                     for (std::size_t k = 0; k < done.size(); ++k) wide[done[k]] = outcomes[k];
+                   });
 
   int standing = 0, rocking = 0, sliding = 0, tipped = 0;
   double worst_rotation = 0.0;
