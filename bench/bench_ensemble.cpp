@@ -1,5 +1,5 @@
 // End to end: an ensemble file in, the fragility file out, on every core. The default is
-// the yardstick, 10,000 realisations of the 1/3 model cask under a 20 s record at
+// the yardstick, 10,000 realisations of the 1/3 model cask under a 20 s record at
 // f_s = 0.01 (ensembles/benchmark-1-3-elcentro-20s.toml); CASKDEM_BENCH_ENSEMBLE names
 // another file. One iteration per instruction set (the best this machine has, then AVX2 for
 // the ratio between them): each takes a minute or more.
@@ -18,7 +18,7 @@
 namespace caskdem::bench {
 namespace {
 
-void end_to_end(benchmark::State& state, InstructionSet instruction_set) {
+void end_to_end(benchmark::State& state, InstructionSet instruction_set, bool refill) {
   if (!instruction_set_available(instruction_set)) {
     state.SkipWithError((instruction_set_name(instruction_set) + " is not available on this machine").c_str());
     return;
@@ -27,15 +27,19 @@ void end_to_end(benchmark::State& state, InstructionSet instruction_set) {
   const std::string file = chosen ? chosen : std::string(CASKDEM_SOURCE_DIR) + "/ensembles/benchmark-1-3-elcentro-20s.toml";
   const EnsembleSpec spec = load_ensemble(file);
   double lane_steps = 0.0;
+  LaneOccupancy occupancy;
   for (auto _ : state) {
     const EnsemblePlan plan(spec, instruction_set);
     ExecuteOptions options;
     options.threads = static_cast<int>(state.range(0));
     options.isa = instruction_set;
     options.progress = false;
+    options.refill = refill;
     options.output = std::filesystem::temp_directory_path() / "caskdem-bench-ensemble.h5";
     const ExecuteReport report = execute_ensemble(plan, options);
     benchmark::DoNotOptimize(report.limit_states.data());
+    occupancy.lane_steps += report.occupancy.lane_steps;
+    occupancy.stopped_lane_steps += report.occupancy.stopped_lane_steps;
     for (int m = 0; m < plan.motion_count(); ++m) {
       lane_steps += double(plan.size()) / plan.motion_count() * std::ceil(plan.run_duration(m) / plan.model().time_step);
     }
@@ -44,12 +48,17 @@ void end_to_end(benchmark::State& state, InstructionSet instruction_set) {
   state.counters["realisations_per_s"] = benchmark::Counter(double(spec.realisation_count()) * state.iterations(), benchmark::Counter::kIsRate);
   // Scheduled work: lanes that tip over stop early, so the kernel does less than this.
   state.counters["scheduled_lane_steps_per_s"] = benchmark::Counter(lane_steps, benchmark::Counter::kIsRate);
+  // Of the lane-steps computed, the share on lanes that had stopped (ensemble/runner.h).
+  state.counters["stopped_lane_fraction"] = occupancy.stopped_fraction();
+  state.counters["time_step_s"] = EnsemblePlan(spec, instruction_set).model().time_step;
 }
 
 }  // namespace
 
-BENCHMARK_CAPTURE(end_to_end, best, InstructionSet::automatic)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
-BENCHMARK_CAPTURE(end_to_end, avx2, InstructionSet::avx2)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(end_to_end, best, InstructionSet::automatic, true)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+// Lanes in lockstep blocks, as before refilling: what refilling saves.
+BENCHMARK_CAPTURE(end_to_end, best_lockstep, InstructionSet::automatic, false)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(end_to_end, avx2, InstructionSet::avx2, true)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
 
 }  // namespace caskdem::bench
 
