@@ -48,6 +48,7 @@ ExecuteReport execute_ensemble(const EnsemblePlan& plan, const ExecuteOptions& o
   run.isa = options.isa;
   run.threads = file.run().threads;
   run.lanes = plan.spec().block_lanes;
+  run.refill = options.refill;
   Progress progress(results.size, results.completed_count(), options.progress);
   std::int64_t done = results.completed_count();
   ExecuteReport report;

@@ -19,6 +19,7 @@ struct ExecuteOptions {
   int threads = 0;  // 0: OpenMP's default
   bool resume = false;
   bool progress = true;
+  bool refill = true;  // false: lockstep blocks (the same results; for measuring what refilling saves)
   std::filesystem::path output;
 };
 
