@@ -13,8 +13,10 @@
 //
 //   timestep_convergence ENSEMBLE --fs 0.005,0.01,0.02,0.05,0.1 [--stiffness 1,0.25]
 //       [--hazard FILE --similarity N] [--replicates 200] [--csv ROWS.csv]
+//   timestep_convergence ENSEMBLE --variants 0.005:1,0.01:0.25,... (f_s:contact stiffness scale)
 //
-// The first variant is the reference. Rows are appended to --csv when given.
+// Every f_s with every contact-stiffness scale (model/build.h), or the listed variants. The
+// first variant is the reference. Rows are appended to --csv when given.
 
 #include <algorithm>
 #include <chrono>
@@ -71,7 +73,7 @@ std::vector<double> number_list(const std::string& text) {
 Run run_variant(const EnsembleSpec& base_spec, const Variant& variant) {
   EnsembleSpec spec = base_spec;
   spec.base.model.safety_factor = variant.safety_factor;
-  if (variant.stiffness_scale != 1.0) throw std::invalid_argument("contact stiffness scaling is not available yet");
+  spec.base.model.contact_stiffness_scale = variant.stiffness_scale;
   const EnsemblePlan plan(spec, InstructionSet::automatic);
   ExecuteOptions options;
   options.progress = false;
@@ -154,10 +156,19 @@ int program(int argc, char** argv) {
   double similarity = 1.0;
   int replicates = 200;
   std::string csv;
+  std::vector<std::pair<double, double>> listed;
   for (int a = 2; a + 1 < argc; a += 2) {
     const std::string key = argv[a], value = argv[a + 1];
     if (key == "--fs") safety_factors = number_list(value);
     else if (key == "--stiffness") stiffness = number_list(value);
+    else if (key == "--variants") {
+      std::stringstream in(value);
+      std::string item;
+      while (std::getline(in, item, ',')) {
+        const auto colon = item.find(':');
+        listed.push_back({std::stod(item.substr(0, colon)), colon == std::string::npos ? 1.0 : std::stod(item.substr(colon + 1))});
+      }
+    }
     else if (key == "--hazard") hazard = risk::read_hazard_curve(value);
     else if (key == "--similarity") similarity = std::stod(value);
     else if (key == "--replicates") replicates = std::stoi(value);
@@ -174,6 +185,10 @@ int program(int argc, char** argv) {
   std::vector<Variant> variants;
   for (double k : stiffness) {
     for (double f : safety_factors) variants.push_back({f, k});
+  }
+  if (!listed.empty()) {
+    variants.clear();
+    for (const auto& [f, k] : listed) variants.push_back({f, k});
   }
   std::vector<Run> runs;
   std::vector<Variant> ran;

@@ -49,6 +49,7 @@ struct Model {
   // contact length the corner represents times the out-of-plane depth.
   double corner_normal_stiffness[kMaxCorners] = {};  // N/m
   double corner_shear_stiffness[kMaxCorners] = {};   // N/m
+  double contact_stiffness_scale = 1.0;  // already in the two above; kept for the damping (model/build.h)
 
   FrictionLaw friction_law = FrictionLaw::constant;
   std::int32_t friction_table_size = 0;

@@ -203,6 +203,8 @@ void read_integration(TableReader& root, Case& c) {
   if (!root.has_table("integration")) return;
   TableReader t = root.table("integration");
   c.model.safety_factor = t.in_range("safety_factor", t.quantity_or("safety_factor", Dimension::dimensionless, 0.01), 1e-6, 1.0);
+  c.model.contact_stiffness_scale = t.in_range(
+      "contact_stiffness_scale", t.quantity_or("contact_stiffness_scale", Dimension::dimensionless, 1.0), 1e-4, 1.0);
   c.duration = t.in_range("duration", t.quantity_or("duration", Dimension::time, 0.0), 0.0, kLongestDuration);
   c.settle_time = t.in_range("settle_time", t.quantity_or("settle_time", Dimension::time, 2.0), 0.0, kLongestDuration);
   t.reject_unknown_keys();
@@ -377,7 +379,7 @@ const KeySchema& shared_case_keys() {
       {"contact.barkan", {"shear_modulus", "poisson_ratio", "beta_z", "beta_x"}},
       {"friction", {"law", "coefficient", "static", "kinetic", "decay_speed", "table", "table_file"}},
       {"damping", {"ratio", "frequency"}},
-      {"integration", {"safety_factor", "duration", "settle_time"}},
+      {"integration", {"safety_factor", "contact_stiffness_scale", "duration", "settle_time"}},
       {"limits", {"tip_over_angle", "lift_off_height", "pad_half_width"}},
   };
   return schema;

@@ -41,7 +41,8 @@ static double total_standing_shear_stiffness(const Model& model) {
 
 double damping_beta(const Model& model, const RealisationParameters& p) {
   const double stiffness = total_standing_normal_stiffness(model) * p.stiffness_scale;
-  const double omega = p.damping_frequency > 0.0 ? p.damping_frequency : std::sqrt(stiffness / p.mass);
+  const double omega = p.damping_frequency > 0.0 ? p.damping_frequency * std::sqrt(model.contact_stiffness_scale)
+                                                : std::sqrt(stiffness / p.mass);
   return 2.0 * p.damping_ratio / omega;
 }
 
@@ -82,6 +83,9 @@ Model build_model(const ModelSpec& spec, const RealisationParameters& nominal) {
   if (!(spec.stiffness.normal > 0.0) || !(spec.stiffness.shear > 0.0)) {
     throw std::invalid_argument("the contact stiffnesses must be positive");
   }
+  if (!(spec.contact_stiffness_scale > 0.0 && spec.contact_stiffness_scale <= 1.0)) {
+    throw std::invalid_argument("the contact stiffness scale must be above 0 and at most 1");
+  }
   std::vector<ContactCorner> all = corners;
   Model m;
   if (spec.base_centre_contact && spec.section.footprint_points > 0) {
@@ -119,9 +123,12 @@ Model build_model(const ModelSpec& spec, const RealisationParameters& nominal) {
     m.corner_x[k] = contact[k].arc_centre.x;
     m.corner_y[k] = contact[k].arc_centre.y;
     m.corner_rest_gap[k] = contact[k].rest_gap;
-    m.corner_normal_stiffness[k] = spec.stiffness.normal * contact[k].contact_length * spec.section.depth;
-    m.corner_shear_stiffness[k] = spec.stiffness.shear * contact[k].contact_length * spec.section.depth;
+    m.corner_normal_stiffness[k] =
+        spec.contact_stiffness_scale * spec.stiffness.normal * contact[k].contact_length * spec.section.depth;
+    m.corner_shear_stiffness[k] =
+        spec.contact_stiffness_scale * spec.stiffness.shear * contact[k].contact_length * spec.section.depth;
   }
+  m.contact_stiffness_scale = spec.contact_stiffness_scale;
   m.rounding_radius = spec.section.rounding;
   m.friction_law = spec.friction_law;
   if (spec.friction_law == FrictionLaw::tabulated) {

@@ -9,7 +9,9 @@
 // their springs, and build_model refuses a safety factor that breaks the bound.
 //
 // Damping: stiffness-proportional, C = beta K, with beta = 2 h / w for a damping ratio h
-// at the circular frequency w (given, or sqrt(K / m) of the cask on its springs).
+// at the circular frequency w (given, or sqrt(K / m) of the cask on its springs). Contact-
+// stiffness scaling by s (ModelSpec::contact_stiffness_scale) multiplies K by s and a given
+// w by sqrt(s): the softened contact keeps its damping ratio, and so nearly its restitution.
 
 #include <utility>
 #include <vector>
@@ -28,6 +30,10 @@ struct ModelSpec {
   FrictionLaw friction_law = FrictionLaw::constant;
   std::vector<std::pair<double, double>> friction_table;  // (slip speed m/s, coefficient), for the tabulated law
   double safety_factor = 0.01;   // f_s
+  // Contact-stiffness scaling, a numerical device (docs/time-step.md): the normal and shear
+  // springs times this factor, a given damping frequency times its square root (the damping
+  // ratio kept at the softened contact's frequency), so the step grows by 1/sqrt(factor).
+  double contact_stiffness_scale = 1.0;
   double time_step = 0.0;        // s; 0: from f_s and the nominal mass
   double tip_over_angle = 0.0;   // rad; 0: pi/2 (lying on its side)
   double lift_off_height = 0.0;  // m; 0: a quarter of the section's height
