@@ -9,7 +9,7 @@ packages=(
   libhdf5-dev hdf5-tools
   libtomlplusplus-dev libcli11-dev nlohmann-json3-dev
   libnlopt-cxx-dev librandom123-dev
-  libgtest-dev libgmock-dev libbenchmark-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev
   libopenmpi-dev openmpi-bin
   python3-matplotlib python3-h5py python3-numpy
   clang libclang-rt-dev libomp-dev
