@@ -87,6 +87,28 @@ TEST_F(CommandLine, AZeroRecordCannotBeScaledToATarget) {
   }
 }
 
+// A station's components: reported on one time base, with the pair's measures; components of
+// different stations (time steps that differ) and a target for a pair are refused, once.
+TEST_F(CommandLine, AStationsComponentsAreReportedTogetherOrRefused) {
+  const std::string sets = std::string(CASKDEM_SHARED_DIR) + "/motions/three-component/";
+  const std::string h1 = sets + "elcentro1940_RSN6_H1_180.AT2", h2 = sets + "elcentro1940_RSN6_H2_270.AT2";
+  const Outcome o = run_caskdem("motion " + h1 + " --pair " + h2 + " --vertical " + sets + "elcentro1940_RSN6_UP.AT2");
+  EXPECT_EQ(o.status, 0) << o.output;
+  EXPECT_THAT(o.output, HasSubstr("lengths 5372, 5346, 5378 samples: trimmed to 5346"));
+  EXPECT_THAT(o.output, HasSubstr("H1         0.2808 g"));
+  EXPECT_THAT(o.output, HasSubstr("RotD50"));
+  const std::string kobe = sets + "kobe1995_RSN1106_KJMA_H2_090.AT2";
+  for (const auto& [arguments, message] :
+       {std::pair{"motion " + h1 + " --pair " + kobe, kobe + ": time step 0.02 s, but " + h1 + " has 0.01 s"},
+        std::pair{"motion " + h1 + " --pair " + h2 + " --target-pga 300",
+                  std::string("--target-pga: a station's components are scaled together")}}) {
+    const Outcome refused = run_caskdem(arguments);
+    EXPECT_EQ(refused.status, 2) << arguments << ": " << refused.output;
+    EXPECT_THAT(refused.output, HasSubstr(message)) << arguments;
+    EXPECT_EQ(std::count(refused.output.begin(), refused.output.end(), '\n'), 1) << "one message: " << refused.output;
+  }
+}
+
 // A record sample no earthquake can produce (mutation fuzzing found 5.4e305 g accepted and
 // printed as "inf gal") is refused with the file, the line and the value; so is a scaling
 // beyond the largest acceleration, and a similarity scale whose ratios overflow. Nothing
