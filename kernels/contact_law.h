@@ -42,6 +42,26 @@ struct CornerContact {
   CornerState<T> next;  // spring-slider state after this step
 };
 
+// The normal force of a contact point from its gap (negative: overlap) and normal velocity:
+// spring (with the soft layer) and dashpots, never pulling. Shared by the 2D corners and the 3D
+// cask's contact points (kernels/step3d.h).
+template <class T>
+inline T normal_force(const T& normal_stiffness, const LaneParameters<T>& lane_parameters, const T& gap,
+                      const T& normal_velocity) {
+  using lane::broadcast;
+  using lane::select;
+  const T zero = broadcast<T>(0.0);
+  const auto touching = gap < zero;
+  const T overlap = select(touching, -gap, zero);
+  const T layer = lane_parameters.floor_soft_depth;
+  const T spring_force = normal_stiffness * (lane_parameters.floor_soft_ratio * lane::min(overlap, layer) +
+                                             lane::max(overlap - layer, zero));
+  const T damping_force =
+      (lane_parameters.damping_beta + lane_parameters.impact_damping * overlap) * normal_stiffness * normal_velocity;
+  // No tension: the spring and the dashpots together may push but never pull.
+  return select(touching, lane::max(spring_force - damping_force, zero), zero);
+}
+
 template <FrictionLaw Law, class T>
 inline CornerContact<T> corner_contact(const Model& model, const LaneParameters<T>& lane_parameters, int corner,
                                        const T& gap, const T& normal_velocity, const T& slip_velocity,
@@ -54,17 +74,11 @@ inline CornerContact<T> corner_contact(const Model& model, const LaneParameters<
   const T beta = lane_parameters.damping_beta;
 
   const auto touching = gap < zero;
-  const T overlap = select(touching, -gap, zero);
-  const T layer = lane_parameters.floor_soft_depth;
-  const T spring_force = normal_stiffness * (lane_parameters.floor_soft_ratio * lane::min(overlap, layer) +
-                                             lane::max(overlap - layer, zero));
-  const T damping_force = (beta + lane_parameters.impact_damping * overlap) * normal_stiffness * normal_velocity;
-  // No tension: the spring and the dashpots together may push but never pull.
-  const T normal_force = select(touching, lane::max(spring_force - damping_force, zero), zero);
+  const T normal = normal_force(normal_stiffness, lane_parameters, gap, normal_velocity);
 
   const auto was_slipping = previous.slipping > broadcast<T>(0.5);
   const T mu = friction_coefficient<Law>(model, lane_parameters, lane::abs(slip_velocity), was_slipping);
-  const T limit = mu * normal_force;
+  const T limit = mu * normal;
   const T trial = previous.shear_spring - shear_stiffness * slip_velocity * broadcast<T>(model.time_step);
   const auto slipping = touching && (lane::abs(trial) > limit);
   // Both branches computed, blended per lane: slip caps the spring at mu F_n, stick keeps
@@ -73,7 +87,7 @@ inline CornerContact<T> corner_contact(const Model& model, const LaneParameters<
   const T dashpot = select(touching && !slipping, -beta * shear_stiffness * slip_velocity, zero);
   const T shear_force = lane::clamp(spring + dashpot, -limit, limit);
 
-  return {normal_force, shear_force, {spring, lane::as_number<T>(slipping)}};
+  return {normal, shear_force, {spring, lane::as_number<T>(slipping)}};
 }
 
 }  // namespace caskdem::kernels

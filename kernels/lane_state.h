@@ -28,14 +28,18 @@ struct LaneParameters {
   T floor_soft_depth;      // d0, m
   T base_camber;           // c, m: the base-centre corner (Model::camber_corner) sits c below the base corners
   T wobble_damping;        // zeta_w: rocking damper -2 zeta_w p (|theta|/alpha) omega, out-of-plane losses
+  // The 3D cask (kernels/step3d.h) also turns about its own axis: inverse_inertia is then about
+  // the horizontal axes through the centre of mass, this about the cask's axis (0 in 2D).
+  T inverse_axial_inertia;  // 1/(kg m^2)
 
   template <class F>
   void for_each_field(F&& f) {
     f(inverse_mass); f(inverse_inertia); f(centre_x); f(centre_y); f(friction_static); f(friction_kinetic);
     f(inverse_decay_speed); f(damping_beta); f(horizontal_scale); f(vertical_scale); f(stiffness_scale);
     f(impact_damping); f(floor_soft_ratio); f(floor_soft_depth); f(base_camber); f(wobble_damping);
+    f(inverse_axial_inertia);
   }
-  static constexpr int field_count = 16;
+  static constexpr int field_count = 17;
 };
 
 // Rigid-body state in the floor frame. Central differences keep positions at whole steps

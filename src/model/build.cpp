@@ -225,6 +225,8 @@ LaneParameters<double> lane_parameters(const Model& model, const RealisationPara
   lane.floor_soft_depth = p.floor_soft_depth;
   lane.base_camber = p.base_camber;
   lane.wobble_damping = p.wobble_damping;
+  if (!(p.axial_inertia >= 0.0)) throw std::invalid_argument("the axial inertia must be non-negative");
+  lane.inverse_axial_inertia = p.axial_inertia > 0.0 ? 1.0 / p.axial_inertia : 0.0;
   return lane;
 }
 

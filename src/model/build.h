@@ -48,7 +48,8 @@ struct ModelSpec {
 // One realisation's physical parameters, SI.
 struct RealisationParameters {
   double mass = 0.0;
-  double inertia = 0.0;   // about the centre of mass
+  double inertia = 0.0;   // about the centre of mass (in 3D about the horizontal axes through it)
+  double axial_inertia = 0.0;  // about the cask's axis, 3D only (0 in 2D)
   Point centre_of_mass;   // body frame
   double friction_static = 0.0;
   double friction_kinetic = 0.0;

@@ -1,0 +1,167 @@
+#pragma once
+// One explicit step of the 3D cask on its floor, for one realisation (T = double) or one SIMD
+// batch (T = xsimd::batch<double, Arch>): the 2D step (kernels/step.h) with the cask free to
+// tilt in any direction, roll on its rim and spin about its axis.
+//
+// Equations of motion in the floor frame, which translates with the table (kernels/model3d.h):
+//   m x'' = sum F - m (a_x(t), g + a_y(t), a_z(t))       a_y the vertical component
+//   L'    = sum l_k x F_k                               L = R pi, about the centre of mass
+// Time stepping as in 2D (central differences: forces from positions at t_n and velocities at
+// t_{n-1/2}): v(n+1/2) = v(n-1/2) + a(n) dt, x(n+1) = x(n) + v(n+1/2) dt; for the rotation
+// the torque kicks the angular momentum, pi <- pi + dt R(n)^T tau(n), and the free rotation
+// over dt (kernels/rigid_rotation.h, Dullweber-Leimkuhler-McLachlan) turns the body and pi
+// together; with no torque that is the exact-to-O(dt^3) symplectic flow of a symmetric top.
+//
+// Each contact point is a sphere of radius r at a body point c_k (kernels/model3d.h): its gap
+// is the centre's height less r, its contact point the sphere's lowest point, lever arm
+// l_k = R (c_k - c_m) - r e_y from the centre of mass c_m. The normal force is the 2D law's
+// (kernels/contact_law.h, normal_force), the friction coefficient the 2D law's
+// (kernels/friction_law.h) at the slip speed |v_s|; the shear spring is the 2D incremental
+// spring made a vector in the floor plane: F_s* = F_s(previous) - K_s v_s dt, capped in
+// magnitude at mu F_n along its own direction (Cundall 1988, the 3D DEM's Mohr-Coulomb
+// slider), with the stiffness-proportional dashpot -beta K_s v_s while it sticks.
+
+#include "kernels/contact_law.h"
+#include "kernels/friction_law.h"
+#include "kernels/lane.h"
+#include "kernels/lane_state.h"
+#include "kernels/lane_state3d.h"
+#include "kernels/model.h"
+#include "kernels/model3d.h"
+#include "kernels/rigid_rotation.h"
+
+namespace caskdem::kernels {
+
+// |e - e_y|^2 of the cask's axis e = R e_y: grows monotonically with the tilt t from vertical,
+// (2 sin(t/2))^2, and is exact near upright (1 - e_y from the quaternion, not by cancellation).
+template <class T>
+inline T axis_departure(const Quaternion<T>& q, const Rotation<T>& rotation) {
+  const T drop = lane::broadcast<T>(2.0) * (q.x * q.x + q.z * q.z);  // 1 - e_y
+  return rotation.r01 * rotation.r01 + drop * drop + rotation.r21 * rotation.r21;
+}
+
+template <FrictionLaw Law, class T>
+inline void step3d(const Model& model, const Contacts3D& contacts, const LaneParameters<T>& p, const T& table_x,
+                   const T& table_vertical, const T& table_z, const T& time, BodyState3D<T>& body,
+                   ContactState3D<T>* points, Response3D<T>& response) {
+  using lane::broadcast;
+  using lane::select;
+  const T zero = broadcast<T>(0.0);
+  const T dt = broadcast<T>(model.time_step);
+  const T radius = broadcast<T>(contacts.rounding_radius);
+  const Quaternion<T> q{body.qw, body.qx, body.qy, body.qz};
+  const Rotation<T> rotation = rotation_of(q);
+  const Vector3<T> omega = rotation.apply(
+      {body.pi_x * p.inverse_inertia, body.pi_y * p.inverse_axial_inertia, body.pi_z * p.inverse_inertia});
+  const Vector3<T> velocity{body.vx, body.vy, body.vz};
+  // A lane that stopped keeps its state; one that stops in this step still updates its springs,
+  // which nothing reads after it stopped.
+  const auto active = response.status == zero;
+
+  // ---- contact forces at t_n -----------------------------------------------------------
+  Vector3<T> force{zero, zero, zero}, torque{zero, zero, zero};
+  T lowest_gap = broadcast<T>(1e300);
+  for (int k = 0; k < contacts.count; ++k) {
+    const Vector3<T> arm = rotation.apply({broadcast<T>(contacts.x[k]) - p.centre_x,
+                                           broadcast<T>(contacts.y[k]) - p.centre_y, broadcast<T>(contacts.z[k])});
+    const T gap = body.y + arm.y - radius;
+    const Vector3<T> lever{arm.x, arm.y - radius, arm.z};
+    const Vector3<T> spin = cross(omega, lever);
+    const Vector3<T> point_velocity{velocity.x + spin.x, velocity.y + spin.y, velocity.z + spin.z};
+    const T normal_stiffness = broadcast<T>(contacts.normal_stiffness[k]) * p.stiffness_scale;
+    const T shear_stiffness = broadcast<T>(contacts.shear_stiffness[k]) * p.stiffness_scale;
+    const auto touching = gap < zero;
+    const T normal = normal_force(normal_stiffness, p, gap, point_velocity.y);
+
+    const T slip_speed = lane::sqrt(point_velocity.x * point_velocity.x + point_velocity.z * point_velocity.z);
+    const auto was_slipping = points[k].slipping > broadcast<T>(0.5);
+    const T limit = friction_coefficient<Law>(model, p, slip_speed, was_slipping) * normal;
+    const T trial_x = points[k].shear_x - shear_stiffness * point_velocity.x * dt;
+    const T trial_z = points[k].shear_z - shear_stiffness * point_velocity.z * dt;
+    const T trial = lane::sqrt(trial_x * trial_x + trial_z * trial_z);
+    const auto slipping = touching && (trial > limit);
+    // Both branches computed, blended per lane: slip caps the spring at mu F_n along its own
+    // direction (trial > limit >= 0, so the division is safe where it is used), stick keeps
+    // the trial force, an open contact forgets it.
+    const T cap = select(slipping, limit / select(slipping, trial, broadcast<T>(1.0)), broadcast<T>(1.0));
+    const T spring_x = select(touching, trial_x * cap, zero);
+    const T spring_z = select(touching, trial_z * cap, zero);
+    const auto sticking = touching && !slipping;
+    T shear_x = spring_x + select(sticking, -p.damping_beta * shear_stiffness * point_velocity.x, zero);
+    T shear_z = spring_z + select(sticking, -p.damping_beta * shear_stiffness * point_velocity.z, zero);
+    // A contact transmits at most mu F_n in shear, dashpot included.
+    const T magnitude = lane::sqrt(shear_x * shear_x + shear_z * shear_z);
+    const auto over = magnitude > limit;
+    const T clip = select(over, limit / select(over, magnitude, broadcast<T>(1.0)), broadcast<T>(1.0));
+    shear_x = shear_x * clip;
+    shear_z = shear_z * clip;
+    points[k].shear_x = select(active, spring_x, points[k].shear_x);
+    points[k].shear_z = select(active, spring_z, points[k].shear_z);
+    points[k].slipping = select(active, lane::as_number<T>(slipping), points[k].slipping);
+
+    const Vector3<T> contact{shear_x, normal, shear_z};
+    force = {force.x + contact.x, force.y + contact.y, force.z + contact.z};
+    const Vector3<T> moment = cross(lever, contact);
+    torque = {torque.x + moment.x, torque.y + moment.y, torque.z + moment.z};
+    lowest_gap = lane::min(lowest_gap, gap);
+    response.max_uplift = lane::max(gap, response.max_uplift);
+  }
+
+  // ---- observe the state at t_n ----------------------------------------------------------
+  Response3D<T>& r = response;
+  // The base centre (body origin) relative to where it stood at t = 0.
+  const Vector3<T> to_base = rotation.apply({-p.centre_x, -p.centre_y, zero});
+  const T slide_x = body.x + to_base.x - r.base_x0;
+  const T slide_z = body.z + to_base.z - r.base_z0;
+  const T slide = lane::sqrt(slide_x * slide_x + slide_z * slide_z);
+  const T departure = axis_departure(q, rotation);
+  const auto finite = lane::isfinite(body.x + body.y + body.z + body.vx + body.vy + body.vz + body.qw + body.qx + body.qy +
+                                     body.qz + body.pi_x + body.pi_y + body.pi_z);
+  const auto tipped = departure >= broadcast<T>(contacts.tip_departure);
+  const auto left_floor = lowest_gap > broadcast<T>(model.lift_off_height);
+  const double pad = model.pad_clearance > 0.0 ? model.pad_clearance : 1e300;
+  const auto slid_off = slide > broadcast<T>(pad);
+  const auto stopping = active && (!finite || tipped || left_floor || slid_off);
+  if (lane::any(stopping)) {
+    // First matching criterion wins: a NaN state says nothing about tipping.
+    T verdict = select(slid_off, broadcast<T>(double(LaneStatus::slid_off_pad)), zero);
+    verdict = select(left_floor, broadcast<T>(double(LaneStatus::left_floor)), verdict);
+    verdict = select(tipped, broadcast<T>(double(LaneStatus::tipped_over)), verdict);
+    verdict = select(!finite, broadcast<T>(double(LaneStatus::non_finite)), verdict);
+    r.status = select(stopping, verdict, r.status);
+    r.end_time = select(stopping, time, r.end_time);
+  }
+  const auto running = r.status == zero;
+  r.max_axis_departure = lane::max(departure, r.max_axis_departure);
+  r.max_slide = lane::max(slide, r.max_slide);
+  const auto above = departure > broadcast<T>(contacts.stability_departure);
+  const auto rose_past_alpha = above && (r.above_stability < broadcast<T>(0.5));
+  if (lane::any(rose_past_alpha)) r.instability_time = select(rose_past_alpha, time, r.instability_time);
+  r.above_stability = lane::as_number<T>(above);
+
+  // ---- advance to t_{n+1} (stopped lanes keep their state) --------------------------------
+  const T ax = force.x * p.inverse_mass - p.horizontal_scale * table_x;
+  const T ay = force.y * p.inverse_mass - (broadcast<T>(model.gravity) + p.vertical_scale * table_vertical);
+  const T az = force.z * p.inverse_mass - p.horizontal_scale * table_z;
+  const T vx = body.vx + ax * dt, vy = body.vy + ay * dt, vz = body.vz + az * dt;
+  const Vector3<T> body_torque = rotation.apply_transpose(torque);
+  Vector3<T> pi{body.pi_x + body_torque.x * dt, body.pi_y + body_torque.y * dt, body.pi_z + body_torque.z * dt};
+  Quaternion<T> next = q;
+  free_rotation(dt, p.inverse_inertia, p.inverse_axial_inertia, next, pi);
+  r.spin = select(running, r.spin + pi.y * p.inverse_axial_inertia * dt, r.spin);
+  body.x = select(running, body.x + vx * dt, body.x);
+  body.y = select(running, body.y + vy * dt, body.y);
+  body.z = select(running, body.z + vz * dt, body.z);
+  body.vx = select(running, vx, body.vx);
+  body.vy = select(running, vy, body.vy);
+  body.vz = select(running, vz, body.vz);
+  body.qw = select(running, next.w, body.qw);
+  body.qx = select(running, next.x, body.qx);
+  body.qy = select(running, next.y, body.qy);
+  body.qz = select(running, next.z, body.qz);
+  body.pi_x = select(running, pi.x, body.pi_x);
+  body.pi_y = select(running, pi.y, body.pi_y);
+  body.pi_z = select(running, pi.z, body.pi_z);
+}
+
+}  // namespace caskdem::kernels

@@ -1,0 +1,58 @@
+#pragma once
+// The 3D cask from its physical description: a solid circular cylinder on a distributed
+// circular base (kernels/model3d.h), the shared Model (friction, gravity, step, end criteria)
+// and one realisation's parameters and rest state. The same description serves the scalar
+// reference (src/sim/simulate3d.h) and SIMD lanes, as in 2D (model/build.h).
+//
+// Mass properties of the solid cylinder, radius R, height H: I_1 = m (R^2 / 4 + H^2 / 12)
+// about a horizontal axis through the centre of mass, I_3 = m R^2 / 2 about its axis.
+// Time step: dt = f_s 2 sqrt(m / (k_n A)), as in 2D with the base's whole standing stiffness;
+// refused beyond the explicit scheme's bound (2 / w_max)(sqrt(1 + z^2) - z), w_max^2 bounded by
+// the trace of M^-1 K of the six rigid-body modes on the contact springs.
+
+#include "kernels/lane_state.h"
+#include "kernels/lane_state3d.h"
+#include "kernels/model.h"
+#include "kernels/model3d.h"
+#include "model/build.h"
+
+namespace caskdem {
+
+inline constexpr int kDefaultRimPoints = 64;  // pivot 0.12 % of R inside the rim (cos(pi / 64))
+
+struct CaskSpec3D {
+  double radius = 0.0;    // R, m
+  double height = 0.0;    // H, m
+  double rounding = 0.0;  // r of the base rim, m
+  double mass = 0.0;      // kg
+  int rim_points = kDefaultRimPoints;
+};
+
+struct Model3D {
+  Model model;  // friction law, gravity, time step, criteria (its 2D corners unused)
+  Contacts3D contacts;
+};
+
+// The solid cylinder's mass, I_1, I_3 and centre of mass (on the axis at H / 2).
+RealisationParameters nominal_parameters3d(const CaskSpec3D& cask, const RealisationParameters& base);
+
+// Friction, damping and integration from `spec` (its section unused; its contact stiffness is
+// the base's distributed k_n and k_s). Throws std::invalid_argument for a cask that cannot
+// stand (rim points below 8 or above 128, a rounding not smaller than R / 4) or an unstable step.
+Model3D build_model3d(const ModelSpec& spec, const CaskSpec3D& cask, const RealisationParameters& nominal);
+
+// One realisation's lane parameters: the 2D ones (model/build.h), with the axial inertia and
+// the damping coefficient of the 3D base (beta = 2 h / w, w given or sqrt(k_n A / m)).
+LaneParameters<double> lane_parameters3d(const Model3D& model, const RealisationParameters& parameters);
+
+// Standing upright at rest on its springs (penetration m g / (k_n A)), and the response's datum.
+BodyState3D<double> rest_state3d(const Model3D& model, const LaneParameters<double>& lane);
+// Leaning at `tilt` towards the azimuth psi (from +x towards +z: the top moves along
+// (cos psi, 0, sin psi)), on the rim point of that direction, which stays where it stood, at rest.
+BodyState3D<double> tilted_state3d(const Model3D& model, const LaneParameters<double>& lane, double tilt, double azimuth);
+Response3D<double> initial_response3d(const LaneParameters<double>& lane, const BodyState3D<double>& body);
+
+// Tilt from vertical of the cask's axis, rad, from the quaternion (0 to pi).
+double axis_tilt(const BodyState3D<double>& body);
+
+}  // namespace caskdem

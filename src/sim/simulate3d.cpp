@@ -1,0 +1,104 @@
+#include "sim/simulate3d.h"
+
+#include <cmath>
+#include <stdexcept>
+
+#include "kernels/step3d.h"
+
+namespace caskdem {
+
+namespace {
+
+struct Run {
+  const Model3D& model;
+  const LaneParameters<double>& lane;
+  const Excitation3D& excitation;
+};
+
+double acceleration(const motion::TableMotion* m, double t) { return m ? m->acceleration(t) : 0.0; }
+
+template <FrictionLaw Law>
+std::int64_t run_steps(const Run& run, BodyState3D<double>& body, ContactState3D<double>* points,
+                       Response3D<double>& response, std::int64_t step_count, std::int64_t output_every,
+                       TimeHistory3D* history) {
+  const double dt = run.model.model.time_step;
+  const double c = std::cos(run.excitation.incidence), s = std::sin(run.excitation.incidence);
+  for (std::int64_t n = 0; n < step_count; ++n) {
+    const double time = static_cast<double>(n) * dt;
+    const double a1 = acceleration(run.excitation.h1, time), a2 = acceleration(run.excitation.h2, time);
+    const double table_x = c * a1 - s * a2, table_z = s * a1 + c * a2;
+    const double table_vertical = acceleration(run.excitation.vertical, time);
+    if (history && n % output_every == 0) {
+      const double tilt = axis_tilt(body);
+      const double ex = 2.0 * (body.qx * body.qy - body.qw * body.qz), ez = 2.0 * (body.qy * body.qz + body.qw * body.qx);
+      const kernels::Rotation<double> r = kernels::rotation_of(kernels::Quaternion<double>{body.qw, body.qx, body.qy, body.qz});
+      const kernels::Vector3<double> to_base = r.apply({-run.lane.centre_x, -run.lane.centre_y, 0.0});
+      double uplift = -1e300;
+      for (int k = 0; k < run.model.contacts.count; ++k) {
+        const kernels::Vector3<double> arm =
+            r.apply({run.model.contacts.x[k] - run.lane.centre_x, run.model.contacts.y[k] - run.lane.centre_y, run.model.contacts.z[k]});
+        uplift = std::max(uplift, body.y + arm.y - run.model.contacts.rounding_radius);
+      }
+      history->time.push_back(time);
+      history->tilt.push_back(tilt);
+      history->tilt_azimuth.push_back(std::atan2(ez, ex));
+      history->spin.push_back(response.spin);
+      history->slide_x.push_back(body.x + to_base.x - response.base_x0);
+      history->slide_z.push_back(body.z + to_base.z - response.base_z0);
+      history->uplift.push_back(std::max(0.0, uplift));
+      history->centre_x.push_back(body.x);
+      history->centre_y.push_back(body.y);
+      history->centre_z.push_back(body.z);
+      history->table_x.push_back(table_x);
+      history->table_z.push_back(table_z);
+      history->table_vertical.push_back(table_vertical);
+    }
+    kernels::step3d<Law>(run.model.model, run.model.contacts, run.lane, table_x, table_vertical, table_z, time, body,
+                         points, response);
+    if (response.status != 0.0) return n + 1;
+  }
+  return step_count;
+}
+
+}  // namespace
+
+RunResult3D simulate3d(const Model3D& model, const LaneParameters<double>& lane, const BodyState3D<double>& initial,
+                       const Excitation3D& excitation, const RunSettings& settings) {
+  if (!excitation.h1) throw std::invalid_argument("a 3D run needs at least its first horizontal component");
+  const double dt = model.model.time_step;
+  const auto steps = static_cast<std::int64_t>(std::ceil(settings.duration / dt));
+  const std::int64_t every = settings.output_interval > 0.0
+                                 ? std::max<std::int64_t>(1, std::llround(settings.output_interval / dt))
+                                 : steps + 1;
+  RunResult3D result;
+  BodyState3D<double> body = initial;
+  std::vector<ContactState3D<double>> points(model.contacts.count, ContactState3D<double>{});
+  Response3D<double> response = initial_response3d(lane, initial);
+  TimeHistory3D* history = settings.output_interval > 0.0 ? &result.history : nullptr;
+  const Run run{model, lane, excitation};
+  std::int64_t done = 0;
+  switch (model.model.friction_law) {
+    case FrictionLaw::constant: done = run_steps<FrictionLaw::constant>(run, body, points.data(), response, steps, every, history); break;
+    case FrictionLaw::static_kinetic: done = run_steps<FrictionLaw::static_kinetic>(run, body, points.data(), response, steps, every, history); break;
+    case FrictionLaw::exponential: done = run_steps<FrictionLaw::exponential>(run, body, points.data(), response, steps, every, history); break;
+    case FrictionLaw::tabulated: done = run_steps<FrictionLaw::tabulated>(run, body, points.data(), response, steps, every, history); break;
+  }
+  RunSummary3D& s = result.summary;
+  s.max_tilt = 2.0 * std::asin(std::min(1.0, 0.5 * std::sqrt(response.max_axis_departure)));
+  s.stability_angle = model.model.stability_angle;
+  s.max_tilt_ratio = s.max_tilt / s.stability_angle;
+  s.max_slide = response.max_slide;
+  const kernels::Rotation<double> r = kernels::rotation_of(kernels::Quaternion<double>{body.qw, body.qx, body.qy, body.qz});
+  const kernels::Vector3<double> to_base = r.apply({-lane.centre_x, -lane.centre_y, 0.0});
+  s.residual_slide = std::hypot(body.x + to_base.x - response.base_x0, body.z + to_base.z - response.base_z0);
+  s.max_uplift = std::max(0.0, response.max_uplift);
+  s.spin = response.spin;
+  s.status = static_cast<LaneStatus>(static_cast<int>(response.status));
+  s.end_time = s.status == LaneStatus::running ? static_cast<double>(done) * dt : response.end_time;
+  s.instability_time = s.status == LaneStatus::tipped_over ? response.instability_time : -1.0;
+  s.time_step = dt;
+  result.final_state = body;
+  return result;
+}
+
+}  // namespace caskdem
