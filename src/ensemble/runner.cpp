@@ -114,6 +114,8 @@ class Lanes {
 
 // What the threads share: the queue of realisations, the sink, the first failure.
 struct Shared {
+  Shared(const EnsemblePlan& p, const MotionTables& t, const RunOptions& o, const OutcomeSink& sink)
+      : plan(p), tables(t), options(o), on_done(sink) {}
   const EnsemblePlan& plan;
   const MotionTables& tables;
   const RunOptions& options;
@@ -243,7 +245,7 @@ MotionTables::MotionTables(const EnsemblePlan& plan, std::int64_t budget_bytes) 
 
 void run_realisations(const EnsemblePlan& plan, const MotionTables& tables, const std::vector<std::int64_t>& realisations,
                       const RunOptions& options, const OutcomeSink& on_done, LaneOccupancy* occupancy) {
-  Shared shared{plan, tables, options, on_done};
+  Shared shared(plan, tables, options, on_done);
   if (options.refill && tables.whole()) {
 #pragma omp parallel num_threads(options.threads)
     {

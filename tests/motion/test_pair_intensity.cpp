@@ -59,7 +59,9 @@ TEST(ComponentSets, EverySharedSetReadsWithItsStatedPgasOnOneTimeBase) {
     const ComponentSet padded = read_component_set(sets / s.h1, sets / s.h2, up, {}, TailRule::pad);
     EXPECT_NEAR(pga_g(padded.h1), s.pga_h1, 5e-5) << s.h1;
     EXPECT_NEAR(pga_g(padded.h2), s.pga_h2, 5e-5) << s.h2;
-    if (up) EXPECT_NEAR(pga_g(*padded.vertical), s.pga_up, 5e-5) << s.up;
+    if (up) {
+      EXPECT_NEAR(pga_g(*padded.vertical), s.pga_up, 5e-5) << s.up;
+    }
     const std::size_t longest = std::max({s.npts_h1, s.npts_h2, s.npts_up});
     std::size_t shortest = std::min(s.npts_h1, s.npts_h2);
     if (up) shortest = std::min(shortest, s.npts_up);
