@@ -17,6 +17,7 @@
 // criteria) before advancing it; a lane that has stopped keeps its state.
 
 #include "kernels/contact_law.h"
+#include "kernels/end_criteria.h"
 #include "kernels/lane.h"
 #include "kernels/lane_state.h"
 #include "kernels/model.h"
@@ -85,18 +86,7 @@ inline void step(const Model& model, const LaneParameters<T>& p, const T& table_
   const auto left_floor = lowest_gap > broadcast<T>(model.lift_off_height);
   const double pad = model.pad_clearance > 0.0 ? model.pad_clearance : 1e300;
   const auto slid_off = lane::abs(slide) > broadcast<T>(pad);
-  const auto stopping = active && (!finite || tipped || left_floor || slid_off);
-  // Stopping is rare: the verdict is worked out only in a batch where some lane stops
-  // (a branch on the whole batch, so every lane's result is the same either way).
-  if (lane::any(stopping)) {
-    // First matching criterion wins: a NaN state says nothing about tipping.
-    T verdict = select(slid_off, broadcast<T>(double(LaneStatus::slid_off_pad)), zero);
-    verdict = select(left_floor, broadcast<T>(double(LaneStatus::left_floor)), verdict);
-    verdict = select(tipped, broadcast<T>(double(LaneStatus::tipped_over)), verdict);
-    verdict = select(!finite, broadcast<T>(double(LaneStatus::non_finite)), verdict);
-    r.status = select(stopping, verdict, r.status);
-    r.end_time = select(stopping, time, r.end_time);
-  }
+  record_stop(active, finite, tipped, left_floor, slid_off, time, r.status, r.end_time);
   const auto running = r.status == zero;
 
   // Running maxima. A stopped lane's state is frozen, so observing it again changes nothing;

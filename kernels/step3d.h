@@ -22,6 +22,7 @@
 // slider), with the stiffness-proportional dashpot -beta K_s v_s while it sticks.
 
 #include "kernels/contact_law.h"
+#include "kernels/end_criteria.h"
 #include "kernels/friction_law.h"
 #include "kernels/lane.h"
 #include "kernels/lane_state.h"
@@ -121,16 +122,7 @@ inline void step3d(const Model& model, const Contacts3D& contacts, const LanePar
   const auto left_floor = lowest_gap > broadcast<T>(model.lift_off_height);
   const double pad = model.pad_clearance > 0.0 ? model.pad_clearance : 1e300;
   const auto slid_off = slide > broadcast<T>(pad);
-  const auto stopping = active && (!finite || tipped || left_floor || slid_off);
-  if (lane::any(stopping)) {
-    // First matching criterion wins: a NaN state says nothing about tipping.
-    T verdict = select(slid_off, broadcast<T>(double(LaneStatus::slid_off_pad)), zero);
-    verdict = select(left_floor, broadcast<T>(double(LaneStatus::left_floor)), verdict);
-    verdict = select(tipped, broadcast<T>(double(LaneStatus::tipped_over)), verdict);
-    verdict = select(!finite, broadcast<T>(double(LaneStatus::non_finite)), verdict);
-    r.status = select(stopping, verdict, r.status);
-    r.end_time = select(stopping, time, r.end_time);
-  }
+  record_stop(active, finite, tipped, left_floor, slid_off, time, r.status, r.end_time);
   const auto running = r.status == zero;
   r.max_axis_departure = lane::max(departure, r.max_axis_departure);
   r.max_slide = lane::max(slide, r.max_slide);
