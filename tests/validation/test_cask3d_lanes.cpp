@@ -21,11 +21,24 @@ namespace {
 using Batch = xsimd::batch<double>;
 constexpr std::size_t kWidth = Batch::size;
 
-template <class T, class S>
-T gather_field(const std::vector<S>& lanes, double S::*field) {
-  alignas(64) double values[kWidth];
-  for (std::size_t l = 0; l < kWidth; ++l) values[l] = lanes[l % lanes.size()].*field;
-  return T::load_aligned(values);
+// Field by field, lane l of the batch state from realisation l's scalar state.
+template <class Wide, class Narrow>
+Wide to_batch(const std::vector<Narrow>& lanes) {
+  Wide wide;
+  int field = 0;
+  wide.for_each_field([&](Batch& value) {
+    alignas(64) double values[kWidth];
+    for (std::size_t l = 0; l < kWidth; ++l) {
+      Narrow copy = lanes[l];
+      int k = 0;
+      copy.for_each_field([&](double& v) {
+        if (k++ == field) values[l] = v;
+      });
+    }
+    value = Batch::load_aligned(values);
+    ++field;
+  });
+  return wide;
 }
 
 TEST(Cask3DLanes, EveryLaneEqualsItsScalarRunBitForBit) {
@@ -79,57 +92,14 @@ TEST(Cask3DLanes, EveryLaneEqualsItsScalarRunBitForBit) {
       rocked += scalar_responses[l].max_uplift > 1e-3;
     }
     // The same realisations as one batch.
-    LaneParameters<Batch> p;
-    {
-      int field = 0;
-      p.for_each_field([&](Batch& value) {
-        alignas(64) double values[kWidth];
-        for (std::size_t l = 0; l < kWidth; ++l) {
-          LaneParameters<double> copy = lanes[l];
-          int k = 0;
-          copy.for_each_field([&](double& v) {
-            if (k++ == field) values[l] = v;
-          });
-        }
-        value = Batch::load_aligned(values);
-        ++field;
-      });
-    }
+    const LaneParameters<Batch> p = to_batch<LaneParameters<Batch>>(lanes);
     const auto batch_of = [&](auto&& per_lane) {
       alignas(64) double values[kWidth];
       for (std::size_t l = 0; l < kWidth; ++l) values[l] = per_lane(l);
       return Batch::load_aligned(values);
     };
-    BodyState3D<Batch> body;
-    Response3D<Batch> response;
-    {
-      int field = 0;
-      body.for_each_field([&](Batch& value) {
-        value = batch_of([&](std::size_t l) {
-          BodyState3D<double> b = bodies[l];
-          double out = 0.0;
-          int k = 0;
-          b.for_each_field([&](double& v) {
-            if (k++ == field) out = v;
-          });
-          return out;
-        });
-        ++field;
-      });
-      field = 0;
-      response.for_each_field([&](Batch& value) {
-        value = batch_of([&](std::size_t l) {
-          Response3D<double> r = responses[l];
-          double out = 0.0;
-          int k = 0;
-          r.for_each_field([&](double& v) {
-            if (k++ == field) out = v;
-          });
-          return out;
-        });
-        ++field;
-      });
-    }
+    BodyState3D<Batch> body = to_batch<BodyState3D<Batch>>(bodies);
+    Response3D<Batch> response = to_batch<Response3D<Batch>>(responses);
     std::vector<ContactState3D<Batch>> points(model.contacts.count,
                                               ContactState3D<Batch>{Batch(0.0), Batch(0.0), Batch(0.0)});
     for (int n = 0; n < steps; ++n) {
