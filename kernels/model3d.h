@@ -10,27 +10,30 @@
 //
 // The base. A real cask stands on the circle of its base: a distributed Winkler foundation of
 // k_n per unit area has vertical stiffness k_n A and rocking stiffness k_n I_base (A = pi R^2,
-// I_base = pi R^4 / 4), and a tilted cask pivots on its rim. The points here give both: a ring
-// of N points at radius R_c = R - r (the rim, rounded by r: each point is a sphere of radius r)
-// with K_ring = k_n I_base / (R_c^2 / 2) in all, and one point at the centre with the rest,
-// k_n A - K_ring (>= 0 for R_c >= R / sqrt 2). A tilted cask pivots on a chord of the ring,
-// R_c cos(pi / N) from the axis: 0.12 % inside for N = 64. Shear springs take the same shares
-// of k_s A.
+// I_base = pi R^4 / 4), and a tilted cask pivots on its rim. Two contacts give both: the rim, a
+// continuous ring at radius R_c = R - r (rounded by r: a ring of spheres of radius r) with
+// K_ring = k_n I_base / (R_c^2 / 2) in all, and one point at the centre with the rest,
+// k_n A - K_ring (>= 0 for R_c >= R / sqrt 2). The ring touches on an arc around its lowest
+// point, integrated by nodes that move with the arc (kernels/rim_contact.h): it pivots on the
+// rim itself and can roll on it. Shear springs take the same shares of k_s A; the rim's
+// friction is one spring-slider at its centre of pressure (kernels/step3d.h).
 
 #include <cstdint>
 
 namespace caskdem {
 
-inline constexpr int kMaxContactPoints3D = 129;  // a ring of up to 128 and the centre
+inline constexpr int kRimNodePairs = 8;                        // 16 Gauss nodes on the touching arc
+inline constexpr int kContactSliders3D = 2;  // the rim's spring-slider, then the centre's
 
 struct Contacts3D {
-  std::int32_t count = 0;
-  // Sphere centres in the body frame.
-  double x[kMaxContactPoints3D] = {};
-  double y[kMaxContactPoints3D] = {};
-  double z[kMaxContactPoints3D] = {};
-  double normal_stiffness[kMaxContactPoints3D] = {};  // N/m
-  double shear_stiffness[kMaxContactPoints3D] = {};   // N/m
+  // Gauss-Legendre rule of 2 kRimNodePairs nodes on [-1, 1]: the positive abscissae, weights.
+  double node_abscissa[kRimNodePairs] = {};
+  double node_weight[kRimNodePairs] = {};
+  double ring_radius = 0.0;            // R_c, m: the sphere centres' circle
+  double ring_normal_stiffness = 0.0;  // K_ring, N/m, the whole ring
+  double ring_shear_stiffness = 0.0;   // N/m
+  double centre_normal_stiffness = 0.0;
+  double centre_shear_stiffness = 0.0;
   double rounding_radius = 0.0;  // r, m
   double base_radius = 0.0;      // R, m
   double height = 0.0;           // H, m

@@ -12,7 +12,8 @@
 // over dt (kernels/rigid_rotation.h, Dullweber-Leimkuhler-McLachlan) turns the body and pi
 // together; with no torque that is the exact-to-O(dt^3) symplectic flow of a symmetric top.
 //
-// Each contact point is a sphere of radius r at a body point c_k (kernels/model3d.h): its gap
+// Each contact point is a sphere of radius r at a body point c_k, a node of the rim's touching
+// arc or the base's centre (kernels/model3d.h, kernels/rim_contact.h): its gap
 // is the centre's height less r, its contact point the sphere's lowest point, lever arm
 // l_k = R (c_k - c_m) - r e_y from the centre of mass c_m. The normal force is the 2D law's
 // (kernels/contact_law.h, normal_force), the friction coefficient the 2D law's
@@ -30,6 +31,7 @@
 #include "kernels/model.h"
 #include "kernels/model3d.h"
 #include "kernels/rigid_rotation.h"
+#include "kernels/rim_contact.h"
 
 namespace caskdem::kernels {
 
@@ -39,6 +41,77 @@ template <class T>
 inline T axis_departure(const Quaternion<T>& q, const Rotation<T>& rotation) {
   const T drop = lane::broadcast<T>(2.0) * (q.x * q.x + q.z * q.z);  // 1 - e_y
   return rotation.r01 * rotation.r01 + drop * drop + rotation.r21 * rotation.r21;
+}
+
+// Where the rim touches at t_n: its centre's gap, the amplitude A of its gap around the ring
+// and the touching arc (kernels/rim_contact.h).
+template <class T>
+struct RimTouch {
+  T centre_gap, amplitude;
+  RimArc<T> arc;
+};
+
+template <class T>
+inline RimTouch<T> rim_touch(const Contacts3D& contacts, const LaneParameters<T>& p, const Rotation<T>& rotation,
+                             const T& height) {
+  const T radius = lane::broadcast<T>(contacts.rounding_radius), ring = lane::broadcast<T>(contacts.ring_radius);
+  const T centre_gap = height + rotation.apply({-p.centre_x, radius - p.centre_y, lane::broadcast<T>(0.0)}).y - radius;
+  const T slope_x = ring * rotation.r10, slope_z = ring * rotation.r12;
+  return {centre_gap, lane::sqrt(slope_x * slope_x + slope_z * slope_z), touching_arc(centre_gap, slope_x, slope_z)};
+}
+
+// The rim's nodes on its touching arc in mirror pairs, each with its body-frame sphere centre
+// (x, r, z) and stiffnesses: visit(x, z, K_n, K_s).
+template <class T, class Visit>
+inline void for_each_rim_node(const Contacts3D& contacts, const LaneParameters<T>& p, const RimTouch<T>& rim,
+                              Visit&& visit) {
+  using lane::broadcast;
+  const T ring = broadcast<T>(contacts.ring_radius);
+  const T ring_normal = broadcast<T>(contacts.ring_normal_stiffness) * p.stiffness_scale;
+  const T ring_shear = broadcast<T>(contacts.ring_shear_stiffness) * p.stiffness_scale;
+  for (int j = 0; j < kRimNodePairs; ++j) {
+    RimNode<T> ahead, behind;
+    rim_node_pair(contacts, rim.arc, j, ahead, behind);
+    visit(ring * ahead.cos_theta, ring * ahead.sin_theta, ring_normal * ahead.share, ring_shear * ahead.share);
+    visit(ring * behind.cos_theta, ring * behind.sin_theta, ring_normal * behind.share, ring_shear * behind.share);
+  }
+}
+
+// The spring-slider of one contact in the floor plane: the 2D incremental shear spring made a
+// vector, F_s* = F_s(previous) - K_s v_s dt, capped in magnitude at mu F_n along its own
+// direction (Cundall 1988), the stiffness-proportional dashpot -beta K_s v_s while it sticks,
+// and at most mu F_n transmitted, dashpot included. Returns the shear force on the cask.
+template <FrictionLaw Law, class T, class Mask>
+inline Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p, const Mask& touching, const Mask& active,
+                                const T& normal, const T& shear_stiffness, const T& slip_x, const T& slip_z,
+                                ContactState3D<T>& state) {
+  using lane::broadcast;
+  using lane::select;
+  const T zero = broadcast<T>(0.0), one = broadcast<T>(1.0);
+  const T dt = broadcast<T>(model.time_step);
+  const T slip_speed = lane::sqrt(slip_x * slip_x + slip_z * slip_z);
+  const auto was_slipping = state.slipping > broadcast<T>(0.5);
+  const T limit = friction_coefficient<Law>(model, p, slip_speed, was_slipping) * normal;
+  const T trial_x = state.shear_x - shear_stiffness * slip_x * dt;
+  const T trial_z = state.shear_z - shear_stiffness * slip_z * dt;
+  const T trial = lane::sqrt(trial_x * trial_x + trial_z * trial_z);
+  const auto slipping = touching && (trial > limit);
+  // Both branches computed, blended per lane: slip caps the spring at mu F_n along its own
+  // direction (trial > limit >= 0, so the division is safe where it is used), stick keeps
+  // the trial force, an open contact forgets it.
+  const T cap = select(slipping, limit / select(slipping, trial, one), one);
+  const T spring_x = select(touching, trial_x * cap, zero);
+  const T spring_z = select(touching, trial_z * cap, zero);
+  const auto sticking = touching && !slipping;
+  const T shear_x = spring_x + select(sticking, -p.damping_beta * shear_stiffness * slip_x, zero);
+  const T shear_z = spring_z + select(sticking, -p.damping_beta * shear_stiffness * slip_z, zero);
+  const T magnitude = lane::sqrt(shear_x * shear_x + shear_z * shear_z);
+  const auto over = magnitude > limit;
+  const T clip = select(over, limit / select(over, magnitude, one), one);
+  state.shear_x = select(active, spring_x, state.shear_x);
+  state.shear_z = select(active, spring_z, state.shear_z);
+  state.slipping = select(active, lane::as_number<T>(slipping), state.slipping);
+  return {shear_x * clip, zero, shear_z * clip};
 }
 
 template <FrictionLaw Law, class T>
@@ -60,53 +133,62 @@ inline void step3d(const Model& model, const Contacts3D& contacts, const LanePar
   const auto active = response.status == zero;
 
   // ---- contact forces at t_n -----------------------------------------------------------
-  Vector3<T> force{zero, zero, zero}, torque{zero, zero, zero};
-  T lowest_gap = broadcast<T>(1e300);
-  for (int k = 0; k < contacts.count; ++k) {
-    const Vector3<T> arm = rotation.apply({broadcast<T>(contacts.x[k]) - p.centre_x,
-                                           broadcast<T>(contacts.y[k]) - p.centre_y, broadcast<T>(contacts.z[k])});
+  // The rim: each node of its touching arc pushes with the contact law's normal force; their
+  // sum acts at the arc's centre of pressure, where one spring-slider carries the rim's
+  // friction, slipping with the material point there (the rim touches as a point contact: no
+  // friction torque about the floor normal; docs/cask3d.md says why).
+  const RimTouch<T> rim = rim_touch(contacts, p, rotation, body.y);
+  T rim_normal = zero, rim_shear_stiffness = zero;
+  Vector3<T> pressure_moment{zero, zero, zero};  // sum of F_n,j l_j
+  for_each_rim_node(contacts, p, rim, [&](const T& body_x, const T& body_z, const T& normal_stiffness,
+                                          const T& shear_stiffness) {
+    const Vector3<T> arm = rotation.apply({body_x - p.centre_x, radius - p.centre_y, body_z});
+    const T gap = body.y + arm.y - radius;
+    const Vector3<T> lever{arm.x, arm.y - radius, arm.z};
+    const T vertical_velocity = velocity.y + cross(omega, lever).y;
+    const T normal = normal_force(normal_stiffness, p, gap, vertical_velocity);
+    rim_normal = rim_normal + normal;
+    pressure_moment = {pressure_moment.x + normal * lever.x, pressure_moment.y + normal * lever.y,
+                       pressure_moment.z + normal * lever.z};
+    rim_shear_stiffness = rim_shear_stiffness + select(gap < zero, shear_stiffness, zero);
+  });
+  const auto rim_touching = rim_shear_stiffness > zero;
+  // Where no node pushes, the rim's lowest point stands in for the centre of pressure.
+  const auto pushing = rim_normal > zero;
+  const T pushed = select(pushing, rim_normal, broadcast<T>(1.0));
+  const T ring = broadcast<T>(contacts.ring_radius);
+  const Vector3<T> lowest = rotation.apply({ring * rim.arc.towards_cos - p.centre_x, radius - p.centre_y,
+                                            ring * rim.arc.towards_sin});
+  const Vector3<T> rim_lever{select(pushing, pressure_moment.x / pushed, lowest.x),
+                             select(pushing, pressure_moment.y / pushed, lowest.y - radius),
+                             select(pushing, pressure_moment.z / pushed, lowest.z)};
+  const Vector3<T> rim_spin = cross(omega, rim_lever);
+  const Vector3<T> rim_friction = shear_contact<Law>(model, p, rim_touching, active, rim_normal, rim_shear_stiffness,
+                                                     velocity.x + rim_spin.x, velocity.z + rim_spin.z, points[0]);
+  // The normal forces' moment: sum l_j x (0, F_n,j, 0) = (sum F_n,j l_j) x e_y.
+  const Vector3<T> rim_moment = cross(rim_lever, rim_friction);
+  Vector3<T> force{rim_friction.x, rim_normal, rim_friction.z};
+  Vector3<T> torque{rim_moment.x - pressure_moment.z, rim_moment.y, rim_moment.z + pressure_moment.x};
+
+  // The centre of the base: one contact point with its own spring-slider.
+  {
+    const Vector3<T> arm = rotation.apply({-p.centre_x, radius - p.centre_y, zero});
     const T gap = body.y + arm.y - radius;
     const Vector3<T> lever{arm.x, arm.y - radius, arm.z};
     const Vector3<T> spin = cross(omega, lever);
-    const Vector3<T> point_velocity{velocity.x + spin.x, velocity.y + spin.y, velocity.z + spin.z};
-    const T normal_stiffness = broadcast<T>(contacts.normal_stiffness[k]) * p.stiffness_scale;
-    const T shear_stiffness = broadcast<T>(contacts.shear_stiffness[k]) * p.stiffness_scale;
-    const auto touching = gap < zero;
-    const T normal = normal_force(normal_stiffness, p, gap, point_velocity.y);
-
-    const T slip_speed = lane::sqrt(point_velocity.x * point_velocity.x + point_velocity.z * point_velocity.z);
-    const auto was_slipping = points[k].slipping > broadcast<T>(0.5);
-    const T limit = friction_coefficient<Law>(model, p, slip_speed, was_slipping) * normal;
-    const T trial_x = points[k].shear_x - shear_stiffness * point_velocity.x * dt;
-    const T trial_z = points[k].shear_z - shear_stiffness * point_velocity.z * dt;
-    const T trial = lane::sqrt(trial_x * trial_x + trial_z * trial_z);
-    const auto slipping = touching && (trial > limit);
-    // Both branches computed, blended per lane: slip caps the spring at mu F_n along its own
-    // direction (trial > limit >= 0, so the division is safe where it is used), stick keeps
-    // the trial force, an open contact forgets it.
-    const T cap = select(slipping, limit / select(slipping, trial, broadcast<T>(1.0)), broadcast<T>(1.0));
-    const T spring_x = select(touching, trial_x * cap, zero);
-    const T spring_z = select(touching, trial_z * cap, zero);
-    const auto sticking = touching && !slipping;
-    T shear_x = spring_x + select(sticking, -p.damping_beta * shear_stiffness * point_velocity.x, zero);
-    T shear_z = spring_z + select(sticking, -p.damping_beta * shear_stiffness * point_velocity.z, zero);
-    // A contact transmits at most mu F_n in shear, dashpot included.
-    const T magnitude = lane::sqrt(shear_x * shear_x + shear_z * shear_z);
-    const auto over = magnitude > limit;
-    const T clip = select(over, limit / select(over, magnitude, broadcast<T>(1.0)), broadcast<T>(1.0));
-    shear_x = shear_x * clip;
-    shear_z = shear_z * clip;
-    points[k].shear_x = select(active, spring_x, points[k].shear_x);
-    points[k].shear_z = select(active, spring_z, points[k].shear_z);
-    points[k].slipping = select(active, lane::as_number<T>(slipping), points[k].slipping);
-
-    const Vector3<T> contact{shear_x, normal, shear_z};
+    const T normal_stiffness = broadcast<T>(contacts.centre_normal_stiffness) * p.stiffness_scale;
+    const T shear_stiffness = broadcast<T>(contacts.centre_shear_stiffness) * p.stiffness_scale;
+    const T normal = normal_force(normal_stiffness, p, gap, velocity.y + spin.y);
+    const Vector3<T> friction = shear_contact<Law>(model, p, gap < zero, active, normal, shear_stiffness,
+                                                   velocity.x + spin.x, velocity.z + spin.z, points[1]);
+    const Vector3<T> contact{friction.x, normal, friction.z};
     force = {force.x + contact.x, force.y + contact.y, force.z + contact.z};
     const Vector3<T> moment = cross(lever, contact);
     torque = {torque.x + moment.x, torque.y + moment.y, torque.z + moment.z};
-    lowest_gap = lane::min(lowest_gap, gap);
-    response.max_uplift = lane::max(gap, response.max_uplift);
   }
+  // The lowest and highest points of the ring (the centre lies between them).
+  const T lowest_gap = rim.centre_gap - rim.amplitude;
+  response.max_uplift = lane::max(rim.centre_gap + rim.amplitude, response.max_uplift);
 
   // ---- observe the state at t_n ----------------------------------------------------------
   Response3D<T>& r = response;

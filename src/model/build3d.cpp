@@ -5,18 +5,41 @@
 #include <numbers>
 #include <stdexcept>
 
+#include <boost/math/quadrature/gauss.hpp>
+
 #include "kernels/rigid_rotation.h"
+#include "kernels/step3d.h"
 
 namespace caskdem {
 
 namespace {
 double departure_of(double tilt) { return std::pow(2.0 * std::sin(0.5 * tilt), 2); }
 
+// The contact points of the upright cask, each as (x, z, K_n, K_s): the rim's nodes spread
+// over the whole ring, and the centre.
+template <class Visit>
+void for_standing_points(const Contacts3D& c, Visit&& visit) {
+  LaneParameters<double> unscaled{};
+  unscaled.stiffness_scale = 1.0;
+  const kernels::RimTouch<double> whole{-1.0, 0.0, kernels::touching_arc(-1.0, 0.0, 0.0)};
+  kernels::for_each_rim_node(c, unscaled, whole, visit);
+  visit(0.0, 0.0, c.centre_normal_stiffness, c.centre_shear_stiffness);
+}
+}  // namespace
+
 double standing_stiffness(const Contacts3D& c) {
   double total = 0.0;
-  for (int k = 0; k < c.count; ++k) total += c.normal_stiffness[k];
+  for_standing_points(c, [&](double, double, double kn, double) { total += kn; });
   return total;
 }
+
+double standing_rocking_stiffness(const Contacts3D& c) {
+  double total = 0.0;
+  for_standing_points(c, [&](double x, double, double kn, double) { total += kn * x * x; });
+  return total;
+}
+
+namespace {
 
 // beta = 2 h / w at the given frequency (softened with the contact, model/build.h) or at
 // sqrt(K / m) of the cask on its base.
@@ -40,9 +63,6 @@ Model3D build_model3d(const ModelSpec& spec, const CaskSpec3D& cask, const Reali
   if (!(cask.radius > 0.0) || !(cask.height > 0.0) || !(cask.mass > 0.0)) {
     throw std::invalid_argument("the cask's radius, height and mass must be positive");
   }
-  if (cask.rim_points < 8 || cask.rim_points > kMaxContactPoints3D - 1) {
-    throw std::invalid_argument("the rim needs 8 to " + std::to_string(kMaxContactPoints3D - 1) + " points");
-  }
   if (!(cask.rounding >= 0.0 && cask.rounding < 0.25 * cask.radius)) {
     throw std::invalid_argument("the rim's rounding must be at least 0 and below a quarter of the radius");
   }
@@ -59,32 +79,16 @@ Model3D build_model3d(const ModelSpec& spec, const CaskSpec3D& cask, const Reali
   // The ring carries the rocking stiffness k_n I_base (a ring of radius R_c has R_c^2 / 2 per
   // unit stiffness about a diameter); the centre the rest of k_n A.
   const double ring_share = base_inertia / (0.5 * ring * ring) / area;
-  // The ring in mirror pairs (phi, -phi) taken one after the other, with the same cosine and
-  // opposite sines: a cask shaken in the x-y plane from a symmetric start sums forces and
-  // moments whose z and out-of-plane parts cancel exactly, pair by pair, and stays in its plane.
-  const int n = cask.rim_points;
-  int k = 0;
-  const auto place = [&](double cosine, double sine) {
-    c.x[k] = ring * cosine;
-    c.y[k] = r;
-    c.z[k] = ring * sine;
-    c.normal_stiffness[k] = normal_total * ring_share / n;
-    c.shear_stiffness[k] = shear_total * ring_share / n;
-    ++k;
-  };
-  place(1.0, 0.0);
-  for (int j = 1; 2 * j < n; ++j) {
-    const double phi = 2.0 * std::numbers::pi * j / n;
-    place(std::cos(phi), std::sin(phi));
-    place(std::cos(phi), -std::sin(phi));
+  using Rule = boost::math::quadrature::gauss<double, 2 * kRimNodePairs>;
+  for (int j = 0; j < kRimNodePairs; ++j) {
+    c.node_abscissa[j] = Rule::abscissa()[j];
+    c.node_weight[j] = Rule::weights()[j];
   }
-  if (n % 2 == 0) place(-1.0, 0.0);
-  c.x[n] = 0.0;
-  c.y[n] = r;
-  c.z[n] = 0.0;
-  c.normal_stiffness[n] = normal_total * (1.0 - ring_share);
-  c.shear_stiffness[n] = shear_total * (1.0 - ring_share);
-  c.count = n + 1;
+  c.ring_radius = ring;
+  c.ring_normal_stiffness = normal_total * ring_share;
+  c.ring_shear_stiffness = shear_total * ring_share;
+  c.centre_normal_stiffness = normal_total * (1.0 - ring_share);
+  c.centre_shear_stiffness = shear_total * (1.0 - ring_share);
   c.rounding_radius = r;
   c.base_radius = R;
   c.height = cask.height;
@@ -113,16 +117,16 @@ Model3D build_model3d(const ModelSpec& spec, const CaskSpec3D& cask, const Reali
   c.tip_departure = departure_of(m.tip_over_angle);
   c.stability_departure = departure_of(m.stability_angle);
 
-  // Stability: w_max^2 <= trace(M^-1 K) of the six rigid-body modes on the springs.
+  // Stability: w_max^2 <= trace(M^-1 K) of the six rigid-body modes on the springs, standing.
   double trace = 0.0;
-  for (int k = 0; k < c.count; ++k) {
-    const double lx = c.x[k] - nominal.centre_of_mass.x, ly = c.y[k] - r - nominal.centre_of_mass.y, lz = c.z[k];
+  for_standing_points(c, [&](double x, double z, double normal_stiffness, double shear_stiffness) {
+    const double lx = x - nominal.centre_of_mass.x, ly = -nominal.centre_of_mass.y, lz = z;
     const double I1 = nominal.inertia, I3 = nominal.axial_inertia;
     // normal (along y): l x e_y = (-lz, 0, lx); shear along x: l x e_x = (0, lz, -ly); along z: (ly, -lx, 0)
-    trace += c.normal_stiffness[k] * (1.0 / nominal.mass + (lz * lz + lx * lx) / I1);
-    trace += c.shear_stiffness[k] * (1.0 / nominal.mass + lz * lz / I3 + ly * ly / I1);
-    trace += c.shear_stiffness[k] * (1.0 / nominal.mass + ly * ly / I1 + lx * lx / I3);
-  }
+    trace += normal_stiffness * (1.0 / nominal.mass + (lz * lz + lx * lx) / I1);
+    trace += shear_stiffness * (1.0 / nominal.mass + lz * lz / I3 + ly * ly / I1);
+    trace += shear_stiffness * (1.0 / nominal.mass + ly * ly / I1 + lx * lx / I3);
+  });
   const double w_max = std::sqrt(trace);
   const double beta = damping_beta3d(out, nominal);
   const double zeta = beta * w_max / 2.0;

@@ -18,14 +18,11 @@
 
 namespace caskdem {
 
-inline constexpr int kDefaultRimPoints = 64;  // pivot 0.12 % of R inside the rim (cos(pi / 64))
-
 struct CaskSpec3D {
   double radius = 0.0;    // R, m
   double height = 0.0;    // H, m
   double rounding = 0.0;  // r of the base rim, m
   double mass = 0.0;      // kg
-  int rim_points = kDefaultRimPoints;
 };
 
 struct Model3D {
@@ -38,7 +35,7 @@ RealisationParameters nominal_parameters3d(const CaskSpec3D& cask, const Realisa
 
 // Friction, damping and integration from `spec` (its section unused; its contact stiffness is
 // the base's distributed k_n and k_s). Throws std::invalid_argument for a cask that cannot
-// stand (rim points below 8 or above 128, a rounding not smaller than R / 4) or an unstable step.
+// stand (a rounding not smaller than R / 4) or an unstable step.
 Model3D build_model3d(const ModelSpec& spec, const CaskSpec3D& cask, const RealisationParameters& nominal);
 
 // One realisation's lane parameters: the 2D ones (model/build.h), with the axial inertia and
@@ -51,6 +48,11 @@ BodyState3D<double> rest_state3d(const Model3D& model, const LaneParameters<doub
 // (cos psi, 0, sin psi)), on the rim point of that direction, which stays where it stood, at rest.
 BodyState3D<double> tilted_state3d(const Model3D& model, const LaneParameters<double>& lane, double tilt, double azimuth);
 Response3D<double> initial_response3d(const LaneParameters<double>& lane, const BodyState3D<double>& body);
+
+// The upright cask's vertical stiffness, N/m, and its rocking stiffness about a diameter, N m,
+// from its contact points as the step sees them (k_n A and k_n I_base, up to the quadrature).
+double standing_stiffness(const Contacts3D& contacts);
+double standing_rocking_stiffness(const Contacts3D& contacts);
 
 // Tilt from vertical of the cask's axis, rad, from the quaternion (0 to pi).
 double axis_tilt(const BodyState3D<double>& body);

@@ -33,12 +33,8 @@ std::int64_t run_steps(const Run& run, BodyState3D<double>& body, ContactState3D
       const double ex = 2.0 * (body.qx * body.qy - body.qw * body.qz), ez = 2.0 * (body.qy * body.qz + body.qw * body.qx);
       const kernels::Rotation<double> r = kernels::rotation_of(kernels::Quaternion<double>{body.qw, body.qx, body.qy, body.qz});
       const kernels::Vector3<double> to_base = r.apply({-run.lane.centre_x, -run.lane.centre_y, 0.0});
-      double uplift = -1e300;
-      for (int k = 0; k < run.model.contacts.count; ++k) {
-        const kernels::Vector3<double> arm =
-            r.apply({run.model.contacts.x[k] - run.lane.centre_x, run.model.contacts.y[k] - run.lane.centre_y, run.model.contacts.z[k]});
-        uplift = std::max(uplift, body.y + arm.y - run.model.contacts.rounding_radius);
-      }
+      const kernels::RimTouch<double> rim = kernels::rim_touch(run.model.contacts, run.lane, r, body.y);
+      const double uplift = rim.centre_gap + rim.amplitude;  // the ring's highest point
       history->time.push_back(time);
       history->tilt.push_back(tilt);
       history->tilt_azimuth.push_back(std::atan2(ez, ex));
@@ -72,7 +68,7 @@ RunResult3D simulate3d(const Model3D& model, const LaneParameters<double>& lane,
                                  : steps + 1;
   RunResult3D result;
   BodyState3D<double> body = initial;
-  std::vector<ContactState3D<double>> points(model.contacts.count, ContactState3D<double>{});
+  std::vector<ContactState3D<double>> points(kContactSliders3D, ContactState3D<double>{});
   Response3D<double> response = initial_response3d(lane, initial);
   TimeHistory3D* history = settings.output_interval > 0.0 ? &result.history : nullptr;
   const Run run{model, lane, excitation};

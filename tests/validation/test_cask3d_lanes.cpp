@@ -78,7 +78,7 @@ TEST(Cask3DLanes, EveryLaneEqualsItsScalarRunBitForBit) {
     std::vector<Response3D<double>> scalar_responses = responses;
     for (std::size_t l = 0; l < kWidth; ++l) {
       const Setup& s = setups[(first + l) % setups.size()];
-      std::vector<ContactState3D<double>> points(model.contacts.count, ContactState3D<double>{});
+      std::vector<ContactState3D<double>> points(kContactSliders3D, ContactState3D<double>{});
       for (int n = 0; n < steps; ++n) {
         const double t = n * model.model.time_step;
         kernels::step3d<FrictionLaw::exponential>(model.model, model.contacts, lanes[l], s.shake_x * std::sin(7.0 * t), 0.0,
@@ -100,7 +100,7 @@ TEST(Cask3DLanes, EveryLaneEqualsItsScalarRunBitForBit) {
     };
     BodyState3D<Batch> body = to_batch<BodyState3D<Batch>>(bodies);
     Response3D<Batch> response = to_batch<Response3D<Batch>>(responses);
-    std::vector<ContactState3D<Batch>> points(model.contacts.count,
+    std::vector<ContactState3D<Batch>> points(kContactSliders3D,
                                               ContactState3D<Batch>{Batch(0.0), Batch(0.0), Batch(0.0)});
     for (int n = 0; n < steps; ++n) {
       const double t = n * model.model.time_step;

@@ -1,0 +1,89 @@
+#pragma once
+// The 3D cask's rim as one continuous contact: where the ring of the base touches the floor,
+// and the nodes that carry its springs there (kernels/step3d.h).
+//
+// The ring. The rim (rounded by r) is the circle of sphere centres c(theta) = (R_c cos theta,
+// r, R_c sin theta) in the body frame, R_c = R - r, with a normal stiffness K_ring / (2 pi) per
+// radian (and K_s,ring / (2 pi) in shear): the continuous limit of a ring of N points, which
+// pivots on the rim itself instead of a chord R_c cos(pi / N), and rolls instead of falling
+// from point to point (a polygon's every next point lands with an impact, docs/cask3d.md).
+//
+// Where it touches. The gap of c(theta) is linear in cos and sin of theta,
+//   gap(theta) = g_c + R_c (e1_y cos theta + e3_y sin theta) = g_c - A cos(theta - theta_0),
+// g_c the gap of the ring's centre, e1 and e3 the body's x and z axes in the floor frame,
+// A = R_c |(e1_y, e3_y)| and theta_0 the lowest point. It touches on the arc
+// |theta - theta_0| < phi, cos phi = g_c / A (clamped to [-1, 1]: the whole ring or none).
+//
+// The nodes. The arc's integral of a contact point's force per radian is taken by
+// Gauss-Legendre quadrature with 2M nodes that move with the arc, not with the material:
+// psi = theta - theta_0 is mapped to u = tan(psi / 4), which runs over [-U, U],
+// U = tan(phi / 4) = sin(phi/2) / (1 + cos(phi/2)) in [0, 1], so that no inverse cosine is
+// needed and the whole ring (U = 1) stays a finite interval; dpsi = 4 du / (1 + u^2), and with
+// w = psi / 2, cos w = (1 - u^2) / (1 + u^2), sin w = 2 u / (1 + u^2). The integrand is
+// analytic in u on [-1, 1] (poles at +-i), so the rule converges as (1 + sqrt 2)^(-4M): 16
+// nodes give the standing cask its ring's vertical stiffness to 1e-12 and its rocking
+// stiffness to 1e-7. Each node pushes with the 2D contact law's normal force at its share of
+// the ring's stiffness. Nodes come in mirror pairs psi, -psi, summed one after the other, so
+// that a cask shaken in its plane from a symmetric start stays in it exactly.
+//
+// Friction. The nodes' normal forces act together at the arc's centre of pressure, and the
+// rim's friction is one spring-slider there (kernels/step3d.h), slipping with the material
+// point at that place: the rim touches as a point contact, without friction torque about the
+// floor normal. The arc's width is set by the penalty stiffness (centimetres at the paper's),
+// not by the rim, and a drilling friction over it would stop a rolling cask within a turn
+// (measured with a spring-slider at every node: the tilt fell by 40 % in the first turn).
+
+#include "kernels/lane.h"
+#include "kernels/model3d.h"
+
+namespace caskdem::kernels {
+
+template <class T>
+struct RimArc {
+  T towards_cos, towards_sin;  // (cos theta_0, sin theta_0): the lowest point's direction in the body frame
+  T half_width;                // U = tan(phi / 4) in [0, 1]
+};
+
+// One node of the arc: its direction in the body frame and its share of the ring's stiffness.
+template <class T>
+struct RimNode {
+  T cos_theta, sin_theta;
+  T share;  // of K_ring: the node's Gauss weight in theta over 2 pi (the shares of the whole ring sum to 1)
+};
+
+// centre_gap: g_c; slope_x, slope_z: R_c e1_y and R_c e3_y.
+template <class T>
+inline RimArc<T> touching_arc(const T& centre_gap, const T& slope_x, const T& slope_z) {
+  using lane::broadcast;
+  using lane::select;
+  const T zero = broadcast<T>(0.0), one = broadcast<T>(1.0), half = broadcast<T>(0.5);
+  const T amplitude = lane::sqrt(slope_x * slope_x + slope_z * slope_z);
+  const auto tilted = amplitude > zero;
+  const T safe = select(tilted, amplitude, one);
+  // Upright (A = 0) the ring touches all round or not at all, and any direction serves.
+  const T towards_cos = select(tilted, -slope_x / safe, one);
+  const T towards_sin = select(tilted, -slope_z / safe, zero);
+  const T all_or_none = select(centre_gap < zero, -one, one);
+  const T cos_phi = select(tilted, lane::clamp(centre_gap / safe, -one, one), all_or_none);
+  const T half_width = lane::sqrt((one - cos_phi) * half) / (one + lane::sqrt((one + cos_phi) * half));
+  return {towards_cos, towards_sin, half_width};
+}
+
+// The node pair of abscissa `pair` (the nodes at +psi and -psi of Gauss node u = U a).
+template <class T>
+inline void rim_node_pair(const Contacts3D& contacts, const RimArc<T>& arc, int pair, RimNode<T>& ahead,
+                          RimNode<T>& behind) {
+  using lane::broadcast;
+  const T one = broadcast<T>(1.0), two = broadcast<T>(2.0);
+  const T u = arc.half_width * broadcast<T>(contacts.node_abscissa[pair]);
+  const T inverse = one / (one + u * u);
+  const T cos_w = (one - u * u) * inverse, sin_w = two * u * inverse;
+  const T cos_psi = cos_w * cos_w - sin_w * sin_w, sin_psi = two * sin_w * cos_w;
+  // dtheta = 4 U w_j du / (1 + u^2) over [-1, 1] in Gauss's variable; / 2 pi for the share.
+  const T share = broadcast<T>(contacts.node_weight[pair] * 4.0 / (2.0 * 3.14159265358979323846)) * arc.half_width * inverse;
+  const T c0 = arc.towards_cos, s0 = arc.towards_sin;
+  ahead = {c0 * cos_psi - s0 * sin_psi, s0 * cos_psi + c0 * sin_psi, share};
+  behind = {c0 * cos_psi + s0 * sin_psi, s0 * cos_psi - c0 * sin_psi, share};
+}
+
+}  // namespace caskdem::kernels
