@@ -55,9 +55,22 @@ void reject_keys(TableReader& t, const std::string& law, std::initializer_list<s
   }
 }
 
-void read_cask(TableReader& root, Case& c) {
+void read_cask(TableReader& root, Case& c, bool three_d_allowed) {
   TableReader t = root.table("cask");
   c.cask.shape = t.choice("shape", {"cylinder", "polygon"});
+  const long dimensions = t.optional_integer("dimensions").value_or(2);
+  if (dimensions != 2 && dimensions != 3) t.fail("dimensions", "expected 2 (the planar model) or 3 (the cylinder in 3D)");
+  c.cask.dimensions = static_cast<int>(dimensions);
+  if (dimensions == 3 && !three_d_allowed) {
+    t.fail("dimensions", "the 3D cask runs from a case file (`caskdem run`); ensembles and measured specimens are planar");
+  }
+  if (dimensions == 3) {
+    if (c.cask.shape != "cylinder") t.fail("dimensions", "the 3D cask is a cylinder: give shape = \"cylinder\"");
+    // The 3D base is the whole circle (kernels/model3d.h): the planar footprint rules do not apply.
+    for (const char* key : {"half_width", "footprint", "footprint_points", "eccentricity"}) {
+      if (t.has(key)) t.fail(key, "a 3D cask stands on its whole circular base; leave " + std::string(key) + " out");
+    }
+  }
   const double rounding = t.non_negative("rounding", t.quantity_or("rounding", Dimension::length, 0.005));
   const std::optional<double> mass = t.optional_quantity("mass", Dimension::mass);
   const std::optional<double> density = t.optional_quantity("density", Dimension::density);
@@ -223,8 +236,18 @@ void read_limits(TableReader& root, Case& c) {
 
 }  // namespace
 
-MotionSpec read_motion(TableReader& t) {
+MotionSpec read_motion(TableReader& t) { return read_motion(t, false); }
+
+MotionSpec read_motion(TableReader& t, bool three_d) {
   MotionSpec m;
+  if (!three_d) {
+    for (const char* key : {"pair", "vertical_file", "incidence", "tails", "intensity"}) {
+      if (t.has(key)) t.fail(key, "only a 3D cask ([cask] dimensions = 3) takes " + std::string(key));
+    }
+  } else {
+    m.incidence = t.quantity_or("incidence", Dimension::angle, 0.0);
+    if (!(std::abs(m.incidence) <= 2.0 * std::numbers::pi)) t.fail("incidence", "expected an angle of at most 360 degrees");
+  }
   m.where = t.file().string() + ":" + std::to_string(t.line_of("kind"));
   const std::string kind = t.choice("kind", {"sine", "pulse", "record", "synthetic", "none"});
   if (kind == "none") {
@@ -288,6 +311,19 @@ MotionSpec read_motion(TableReader& t) {
       m.read.unit = parsed;
     }
     if (auto dt = t.optional_quantity("time_step", Dimension::time)) m.read.time_step = t.positive("time_step", *dt);
+    if (three_d && t.has("pair")) {
+      m.pair = resolve_beside(t.file(), t.string("pair"));
+      if (t.has("vertical_file")) m.vertical_file = resolve_beside(t.file(), t.string("vertical_file"));
+      m.tails = t.choice("tails", {"trim", "pad"}, "trim") == "pad" ? motion::TailRule::pad : motion::TailRule::trim;
+      const std::string measure = t.choice("intensity", {"rotd50", "rotd100", "geometric_mean"}, "rotd50");
+      m.pair_measure = measure == "rotd100"          ? MotionSpec::PairMeasure::rotd100
+                       : measure == "geometric_mean" ? MotionSpec::PairMeasure::geometric_mean
+                                                     : MotionSpec::PairMeasure::rotd50;
+    } else if (three_d) {
+      for (const char* key : {"vertical_file", "tails", "intensity"}) {
+        if (t.has(key)) t.fail(key, "only a horizontal pair (pair = \"H2 file\") takes " + std::string(key));
+      }
+    }
     const int scalings = int(t.has("scale")) + int(t.has("target_pga")) + int(t.has("target_pgv"));
     if (scalings > 1) t.fail("scale", "give at most one of scale, target_pga and target_pgv");
     if (t.has("target_pga")) {
@@ -300,6 +336,11 @@ MotionSpec read_motion(TableReader& t) {
       m.scaling = MotionSpec::Scaling::factor;
       m.scale = t.quantity_or("scale", Dimension::dimensionless, 1.0);
       if (m.scale == 0.0) t.fail("scale", "expected a non-zero factor (a negative one reverses the record)");
+    }
+  }
+  if (three_d && m.kind != MotionSpec::Kind::record) {
+    for (const char* key : {"pair", "vertical_file", "tails", "intensity"}) {
+      if (t.has(key)) t.fail(key, "only a recorded motion (kind = \"record\") takes " + std::string(key));
     }
   }
   m.similarity_scale = t.positive("similarity_scale", t.quantity_or("similarity_scale", Dimension::dimensionless, 1.0));
@@ -341,8 +382,8 @@ std::unique_ptr<motion::TableMotion> make_motion(const MotionSpec& spec) {
   return motion::make_still();
 }
 
-void read_cask_and_contact(TableReader& root, Case& c) {
-  read_cask(root, c);
+void read_cask_and_contact(TableReader& root, Case& c, bool three_d_allowed) {
+  read_cask(root, c, three_d_allowed);
   const RealisationParameters mass_properties = nominal_parameters(c.model);
   c.parameters.mass = mass_properties.mass;
   c.parameters.inertia = mass_properties.inertia;
@@ -366,6 +407,8 @@ const std::vector<std::string>& motion_keys() {
       "high_pass_damping", "rise_time", "strong_duration", "decay", "pga",
       // record (time_step)
       "file", "format", "unit", "scale", "target_pga", "target_pgv",
+      // a 3D cask's horizontal pair (record) and direction (any)
+      "pair", "vertical_file", "tails", "intensity", "incidence",
       // any
       "similarity_scale"};
   return keys;
@@ -373,7 +416,7 @@ const std::vector<std::string>& motion_keys() {
 
 const KeySchema& shared_case_keys() {
   static const KeySchema schema = {
-      {"cask", {"shape", "rounding", "mass", "density", "inertia", "diameter", "height", "half_width", "footprint",
+      {"cask", {"shape", "dimensions", "rounding", "mass", "density", "inertia", "diameter", "height", "half_width", "footprint",
                 "footprint_points", "eccentricity", "vertices", "depth", "centre_of_mass"}},
       {"contact", {"normal_stiffness", "shear_stiffness", "barkan"}},
       {"contact.barkan", {"shear_modulus", "poisson_ratio", "beta_z", "beta_x"}},
@@ -403,6 +446,12 @@ const KeySchema& case_file_keys() {
   return schema;
 }
 
+void require_planar(const Case& c, const std::string& command) {
+  if (c.cask.dimensions == 3) {
+    throw InputError(located(c.file, 0, "`" + command + "` runs the planar model, and this cask is 3D ([cask] dimensions = 3)"));
+  }
+}
+
 Case load_case(const std::filesystem::path& file) {
   const toml::table document = parse_toml_file(file);
   TableReader root(document, file, "", 0, &case_file_keys());
@@ -410,12 +459,15 @@ Case load_case(const std::filesystem::path& file) {
   c.file = file;
   c.name = file.stem().string();
   c.title = root.optional_string("title").value_or(c.name);
-  read_cask_and_contact(root, c);
+  read_cask_and_contact(root, c, true);
   if (root.has_table("motion")) {
     TableReader t = root.table("motion");
-    c.horizontal = read_motion(t);
+    c.horizontal = read_motion(t, c.cask.dimensions == 3);
     if (t.has_table("vertical")) {
       TableReader v = t.table("vertical");
+      if (!c.horizontal.vertical_file.empty()) {
+        t.fail("vertical_file", "give the vertical either as vertical_file of the set or as [motion.vertical], not both");
+      }
       c.vertical = read_motion(v);
       v.reject_unknown_keys();
     }

@@ -11,6 +11,7 @@
 
 #include "casefile/toml_reader.h"
 #include "model/build.h"
+#include "motion/component_set.h"
 #include "motion/record.h"
 #include "motion/synthetic.h"
 #include "motion/table_motion.h"
@@ -38,6 +39,16 @@ struct MotionSpec {
   Scaling scaling = Scaling::factor;
   double scale = 1.0;            // factor, or target PGA (m/s^2) / PGV (m/s)
   double similarity_scale = 1.0; // N: a prototype motion applied to a 1/N model (time / sqrt(N))
+  // A 3D cask's motion: the record's horizontal pair (file is H1) and the station's vertical,
+  // read as one set on one time base (motion/component_set.h) and scaled by one factor, which
+  // a target_pga or target_pgv sets on the pair's intensity measure; and the direction of H1
+  // in the floor plane (from x towards z), for any kind.
+  enum class PairMeasure { rotd50, rotd100, geometric_mean };
+  std::filesystem::path pair;           // empty: one horizontal component
+  std::filesystem::path vertical_file;  // empty: none, or [motion.vertical]
+  motion::TailRule tails = motion::TailRule::trim;
+  PairMeasure pair_measure = PairMeasure::rotd50;
+  double incidence = 0.0;  // rad
   std::string where;             // "case.toml:12", the motion's kind, for error messages
 };
 
@@ -61,6 +72,7 @@ struct FreeVibrationSpec {
 
 struct CaskDescription {  // what the user gave, for reports
   std::string shape;      // "cylinder" or "polygon"
+  int dimensions = 2;     // 3: the cylinder in 3D (model/build3d.h)
   Cylinder cylinder;      // when a cylinder
 };
 
@@ -90,7 +102,12 @@ const std::vector<std::string>& motion_keys();
 
 // The sections a case file shares with an ensemble file and a measured specimen: the cask
 // (with its nominal mass properties), contact, friction, damping, integration and limits.
-void read_cask_and_contact(TableReader& root, Case& c);
+// A 3D cask ([cask] dimensions = 3) is refused unless three_d_allowed (case files only).
+void read_cask_and_contact(TableReader& root, Case& c, bool three_d_allowed = false);
+// An InputError naming the case file when its cask is 3D: `command` runs the planar model.
+void require_planar(const Case& c, const std::string& command);
 MotionSpec read_motion(TableReader& table);
+// three_d: the table may give a horizontal pair and an incidence (a 3D cask's [motion]).
+MotionSpec read_motion(TableReader& table, bool three_d);
 
 }  // namespace caskdem

@@ -27,6 +27,7 @@ void add_calibrate(CLI::App& app) {
       ->check(number_within("a restitution", 0.01, 0.9999));
   cmd->callback([options]() {
     const Case c = load_case(options->case_file);
+    require_planar(c, "calibrate");
     const Model model = build_case_model(c);
     const FreeVibrationResult now = free_vibration(model, c.parameters, c.free_vibration);
     std::cout << std::setprecision(5);

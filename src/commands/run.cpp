@@ -8,7 +8,9 @@
 #include "core/error.h"
 #include "io/output_paths.h"
 #include "io/run_output.h"
+#include "io/run_output3d.h"
 #include "sim/case_run.h"
+#include "sim/case_run3d.h"
 
 namespace caskdem::commands {
 
@@ -37,6 +39,18 @@ void add_run(CLI::App& app) {
     const std::filesystem::path directory =
         options->out.empty() ? c.output.directory : std::filesystem::path(options->out);
     prepare_output_directory(directory);
+    if (c.cask.dimensions == 3) {
+      const RunReport3D report = run_case3d(c, c.output.interval);
+      print_summary3d(std::cout, report);
+      write_summary_json3d(directory / "summary.json", report);
+      if (c.output.csv) write_history_csv3d(directory / "history.csv", report);
+      if (c.output.hdf5 || (c.output.plot && !options->no_plot)) write_run_hdf5_3d(directory / "run.h5", report);
+      if (c.output.plot && !options->no_plot) {
+        run_plot_script("plot_run3d.py", {(directory / "run.h5").string(), (directory / "history.png").string()});
+      }
+      std::cout << "wrote           " << directory.string() << "/\n";
+      return;
+    }
     const RunReport report = run_case(c, c.output.interval);
     print_summary(std::cout, report);
     write_summary_json(directory / "summary.json", report);

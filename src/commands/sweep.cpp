@@ -72,6 +72,7 @@ void add_sweep(CLI::App& app) {
   cmd->add_option("--out", options->out, "Output directory (default results/<case>-sweep)");
   cmd->callback([options]() {
     const Case base = load_case(options->case_file);
+    require_planar(base, "sweep");
     const std::vector<double> amplitudes = parse_list(options->amplitudes, "--amplitudes");
     const std::vector<double> range = parse_list(options->frequencies, "--frequencies");
     if (range.size() != 3 || !(range[1] >= range[0]) || (range[1] - range[0]) / range[2] > kMostFrequencies) {

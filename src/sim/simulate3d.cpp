@@ -39,6 +39,7 @@ std::int64_t run_steps(const Run& run, BodyState3D<double>& body, ContactState3D
       history->tilt.push_back(tilt);
       history->tilt_azimuth.push_back(std::atan2(ez, ex));
       history->spin.push_back(response.spin);
+      history->rim_azimuth.push_back(std::atan2(rim.arc.towards_sin, rim.arc.towards_cos));
       history->slide_x.push_back(body.x + to_base.x - response.base_x0);
       history->slide_z.push_back(body.z + to_base.z - response.base_z0);
       history->uplift.push_back(std::max(0.0, uplift));

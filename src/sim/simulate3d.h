@@ -24,6 +24,7 @@ struct TimeHistory3D {
   std::vector<double> tilt;                     // rad, of the axis from vertical
   std::vector<double> tilt_azimuth;             // rad, direction the axis leans to, from +x towards +z
   std::vector<double> spin;                     // rad, about the cask's axis, accumulated
+  std::vector<double> rim_azimuth;              // rad, where on its rim the cask is lowest (body frame): rolling turns it
   std::vector<double> slide_x, slide_z;         // m, base centre relative to the floor
   std::vector<double> uplift;                   // m, the highest contact point's gap
   std::vector<double> centre_x, centre_y, centre_z;  // m, centre of mass

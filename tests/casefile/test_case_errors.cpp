@@ -203,5 +203,52 @@ TEST_F(FootprintErrors, EachIsNamed) {
   EXPECT_THAT(error_of(variant("unknown", "footprint = \"ring\"")), HasSubstr("cask.footprint"));
 }
 
+// A 3D cask's keys: the planar footprint rules, a polygon, a pair on a planar case, the vertical
+// given twice, a pair's keys without a pair: each one error naming the key and its line.
+class ThreeDimensionalErrors : public testing::TemporaryFiles {
+ protected:
+  std::filesystem::path variant(const std::string& name, const std::string& find, const std::string& replace,
+                                const std::string& source = "model-1-3-kobe-3d.toml") const {
+    return variant_of(testing::case_path(source), name + ".toml", find, replace);
+  }
+};
+
+TEST_F(ThreeDimensionalErrors, EachIsNamedWithItsLine) {
+  const Case c = load_case(testing::case_path("model-1-3-kobe-3d.toml"));
+  EXPECT_EQ(c.cask.dimensions, 3);
+  EXPECT_FALSE(c.horizontal.pair.empty());
+  EXPECT_EQ(c.horizontal.pair_measure, MotionSpec::PairMeasure::rotd50);
+
+  struct Bad {
+    std::filesystem::path file;
+    std::string line_text, key, message;
+  };
+  const std::vector<Bad> cases = {
+      {variant("four", "dimensions = 3", "dimensions = 4"), "dimensions = 4", "cask.dimensions", "expected 2"},
+      {variant("footprint", "dimensions = 3", "dimensions = 3\nfootprint = \"distributed\""), "footprint =",
+       "cask.footprint", "whole circular base"},
+      {variant("eccentric", "dimensions = 3", "dimensions = 3\neccentricity = \"1 cm\""), "eccentricity =",
+       "cask.eccentricity", "whole circular base"},
+      {variant("planar-pair", "kind = \"record\"", "kind = \"record\"\npair = \"H2.AT2\"",
+               "model-1-3-elcentro-400gal.toml"),
+       "pair =", "motion.pair", "only a 3D cask"},
+      {variant("planar-incidence", "kind = \"record\"", "kind = \"record\"\nincidence = \"30 deg\"",
+               "model-1-3-elcentro-400gal.toml"),
+       "incidence =", "motion.incidence", "only a 3D cask"},
+      {variant("twice", "similarity_scale = 3", "similarity_scale = 3\n[motion.vertical]\nkind = \"none\""),
+       "vertical_file =", "motion.vertical_file", "not both"},
+      {variant("measure", "intensity = \"rotd50\"", "intensity = \"rotd90\""), "intensity =", "motion.intensity",
+       "rotd100"},
+      {variant("no-pair", "pair = ", "# pair = "), "vertical_file =", "motion.vertical_file",
+       "only a horizontal pair"},
+  };
+  for (const Bad& b : cases) {
+    const std::string e = error_of(b.file);
+    EXPECT_THAT(e, HasSubstr(b.file.string() + ":" + std::to_string(line_of(b.file, b.line_text)))) << b.key;
+    EXPECT_THAT(e, HasSubstr(b.key));
+    EXPECT_THAT(e, HasSubstr(b.message));
+  }
+}
+
 }  // namespace
 }  // namespace caskdem

@@ -109,6 +109,81 @@ TEST_F(CommandLine, AStationsComponentsAreReportedTogetherOrRefused) {
   }
 }
 
+// A 3D case runs the station's three components as one motion: scaled together so that the
+// pair's RotD50 PGA is the target, trimmed to one time base (and saying so), and writes the
+// summary, the histories (CSV, HDF5) and the plot.
+TEST_F(CommandLine, AThreeDimensionalCaseRunsTheStationsComponentsTogether) {
+  const std::string sets = std::string(CASKDEM_SHARED_DIR) + "/motions/three-component/";
+  const auto file = write("elcentro-3d.toml", R"(title = "3D El Centro"
+[cask]
+shape = "cylinder"
+dimensions = 3
+diameter = "0.95 m"
+height = "2.033 m"
+density = "8.743 g/cm^3"
+[contact]
+normal_stiffness = "2.38e3 bar/cm"
+shear_stiffness = "2.21e3 bar/cm"
+[friction]
+law = "constant"
+coefficient = 0.6
+[damping]
+ratio = 0.056
+[integration]
+duration = "6 s"
+[output]
+interval = "0.01 s"
+[motion]
+kind = "record"
+file = ")" + sets + R"(elcentro1940_RSN6_H1_180.AT2"
+pair = ")" + sets + R"(elcentro1940_RSN6_H2_270.AT2"
+vertical_file = ")" + sets + R"(elcentro1940_RSN6_UP.AT2"
+target_pga = "500 gal"
+incidence = "30 deg"
+similarity_scale = 3
+)");
+  const std::filesystem::path out = dir_ / "out";
+  const Outcome o = run_caskdem("run " + file.string() + " --out " + out.string());
+  ASSERT_EQ(o.status, 0) << o.output;
+  EXPECT_THAT(o.output, HasSubstr("(3D)"));
+  EXPECT_THAT(o.output, HasSubstr("incidence 30 deg"));
+  EXPECT_THAT(o.output, HasSubstr("lengths 5372, 5346, 5378 samples: trimmed to 5346"));
+  for (const char* name : {"summary.json", "history.csv", "run.h5", "history.png"}) {
+    EXPECT_TRUE(std::filesystem::exists(out / name)) << name;
+  }
+  const std::string summary = testing::file_text(out / "summary.json");
+  EXPECT_THAT(summary, HasSubstr("\"dimensions\": 3"));
+  const std::smatch rotd50 = [&] {
+    std::smatch m;
+    std::regex_search(summary, m, std::regex("\"pga_rotd50_m_s2\": ([0-9.eE+-]+)"));
+    return m;
+  }();
+  ASSERT_FALSE(rotd50.empty()) << summary;
+  EXPECT_NEAR(std::stod(rotd50[1].str()), 5.0, 1e-9) << "the pair as applied has the target RotD50";
+  std::ifstream csv(out / "history.csv");
+  std::string comment, header, line;
+  std::getline(csv, comment);
+  std::getline(csv, header);
+  EXPECT_EQ(header.rfind("time_s,tilt_rad,tilt_azimuth_rad,spin_rad,rim_contact_azimuth_rad,slide_x_m,slide_z_m", 0), 0u)
+      << header;
+  int rows = 0;
+  while (std::getline(csv, line)) ++rows;
+  EXPECT_EQ(rows, 600) << "6 s sampled every 0.01 s (whole steps) from t = 0, as a planar run is";
+
+  // The commands that run the planar model refuse a 3D cask rather than run it flat.
+  const auto ensemble = variant_of(std::string(CASKDEM_SOURCE_DIR) + "/ensembles/model-1-3-builtin.toml",
+                                   "ensemble-3d.toml", "shape = \"cylinder\"", "shape = \"cylinder\"\ndimensions = 3");
+  for (const auto& [arguments, message] :
+       {std::pair{"calibrate " + file.string(), std::string("`calibrate` runs the planar model")},
+        std::pair{"sweep " + file.string() + " --out " + (dir_ / "s").string(), std::string("`sweep` runs the planar model")},
+        std::pair{"ensemble " + ensemble.string() + " --out " + (dir_ / "e.h5").string(),
+                  std::string("key cask.dimensions")}}) {
+    const Outcome refused = run_caskdem(arguments);
+    EXPECT_EQ(refused.status, 2) << arguments << ": " << refused.output;
+    EXPECT_THAT(refused.output, HasSubstr(message)) << arguments;
+  }
+}
+
 // A record sample no earthquake can produce (mutation fuzzing found 5.4e305 g accepted and
 // printed as "inf gal") is refused with the file, the line and the value; so is a scaling
 // beyond the largest acceleration, and a similarity scale whose ratios overflow. Nothing

@@ -1,0 +1,157 @@
+#include "io/run_output3d.h"
+
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+#include <nlohmann/json.hpp>
+
+#include "caskdem/build_info.h"
+#include "core/units.h"
+#include "io/hdf5_file.h"
+
+namespace caskdem {
+
+namespace {
+
+std::string read_text(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// One list of the summary's figures, for the JSON and the HDF5 attributes alike.
+template <class Put>
+void each_summary_figure(const RunReport3D& report, Put&& put) {
+  const RunSummary3D& s = report.result.summary;
+  put("max_tilt_rad", s.max_tilt);
+  put("stability_angle_rad", s.stability_angle);
+  put("max_tilt_ratio", s.max_tilt_ratio);
+  put("max_slide_m", s.max_slide);
+  put("residual_slide_m", s.residual_slide);
+  put("max_uplift_m", s.max_uplift);
+  put("spin_rad", s.spin);
+  put("instability_time_s", s.instability_time);
+  put("end_time_s", s.end_time);
+  put("time_step_s", s.time_step);
+  put("incidence_rad", report.motions.incidence);
+  put("scale_factor", report.motions.scale_factor);
+  if (report.motions.pair) {
+    const motion::PairIntensity& p = *report.motions.pair;
+    put("pga_rotd50_m_s2", p.pga_rotd50);
+    put("pga_rotd100_m_s2", p.pga_rotd100);
+    put("pga_geometric_mean_m_s2", p.pga_geometric_mean);
+    put("pgv_rotd50_m_s", p.pgv_rotd50);
+    put("pgv_rotd100_m_s", p.pgv_rotd100);
+    put("pgv_geometric_mean_m_s", p.pgv_geometric_mean);
+  }
+}
+
+}  // namespace
+
+void print_summary3d(std::ostream& out, const RunReport3D& report) {
+  const RunSummary3D& s = report.result.summary;
+  out << std::setprecision(4);
+  out << "case            " << (report.source ? report.source->title : "") << " (3D)\n";
+  out << "time step       " << s.time_step << " s (" << report.wall_seconds << " s wall)\n";
+  out << "alpha           " << s.stability_angle << " rad (" << units::rad_to_deg(s.stability_angle) << " deg)\n";
+  out << "motion          incidence " << units::rad_to_deg(report.motions.incidence) << " deg, scale "
+      << report.motions.scale_factor;
+  if (report.motions.pair) {
+    out << ", pair PGA RotD50 " << report.motions.pair->pga_rotd50 << " m/s^2, RotD100 " << report.motions.pair->pga_rotd100
+        << " m/s^2";
+  }
+  out << "\n";
+  if (!report.motions.time_base.empty()) out << "time base       " << report.motions.time_base << "\n";
+  out << "max tilt        " << s.max_tilt << " rad = " << s.max_tilt_ratio << " alpha\n";
+  out << "sliding         max " << s.max_slide << " m, residual " << s.residual_slide << " m\n";
+  out << "max uplift      " << s.max_uplift << " m\n";
+  out << "spin            " << s.spin << " rad about the axis\n";
+  out << "result          " << status_name(s.status);
+  if (s.status == LaneStatus::tipped_over) {
+    out << " at t = " << s.end_time << " s (passed alpha at t = " << s.instability_time << " s)";
+  }
+  out << "\n";
+}
+
+void write_summary_json3d(const std::filesystem::path& file, const RunReport3D& report) {
+  nlohmann::json j;
+  j["dimensions"] = 3;
+  each_summary_figure(report, [&](const char* key, double value) { j[key] = value; });
+  j["status"] = status_name(report.result.summary.status);
+  j["tipped_over"] = report.result.summary.status == LaneStatus::tipped_over;
+  j["time_base"] = report.motions.time_base;
+  j["wall_time_s"] = report.wall_seconds;
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error(file.string() + ": cannot write");
+  out << j.dump(2) << "\n";
+}
+
+void write_history_csv3d(const std::filesystem::path& file, const RunReport3D& report) {
+  const TimeHistory3D& h = report.result.history;
+  std::ofstream out(file);
+  if (!out) throw std::runtime_error(file.string() + ": cannot write");
+  out << "# caskdem " << build_info::version << " time history of a 3D run; SI units; x, z horizontal, y up\n";
+  out << "time_s,tilt_rad,tilt_azimuth_rad,spin_rad,rim_contact_azimuth_rad,slide_x_m,slide_z_m,slide_m,uplift_m,"
+         "table_x_m_s2,table_z_m_s2,table_vertical_m_s2\n";
+  out << std::setprecision(10);
+  for (std::size_t i = 0; i < h.time.size(); ++i) {
+    out << h.time[i] << ',' << h.tilt[i] << ',' << h.tilt_azimuth[i] << ',' << h.spin[i] << ',' << h.rim_azimuth[i]
+        << ',' << h.slide_x[i] << ',' << h.slide_z[i] << ',' << std::hypot(h.slide_x[i], h.slide_z[i]) << ','
+        << h.uplift[i] << ',' << h.table_x[i] << ',' << h.table_z[i] << ',' << h.table_vertical[i] << '\n';
+  }
+}
+
+void write_run_hdf5_3d(const std::filesystem::path& file, const RunReport3D& report) {
+  const RunSummary3D& s = report.result.summary;
+  const TimeHistory3D& h = report.result.history;
+  hdf5::Group root = hdf5::create_file(file);
+  root.attribute("caskdem_version", std::string(build_info::version));
+  root.attribute("dimensions", std::int64_t(3));
+  if (report.source) {
+    root.attribute("case_file", report.source->file.string());
+    root.attribute("case_toml", read_text(report.source->file));
+    root.attribute("title", report.source->title);
+  }
+  root.attribute("wall_time_s", report.wall_seconds);
+
+  hdf5::Group summary = root.group("summary");
+  each_summary_figure(report, [&](const char* key, double value) { summary.attribute(key, value); });
+  summary.attribute("status", status_name(s.status));
+  summary.attribute("tipped_over", std::int64_t(s.status == LaneStatus::tipped_over));
+  summary.attribute("time_base", report.motions.time_base);
+
+  hdf5::Group model = root.group("model");
+  model.attribute("radius_m", report.cask.radius);
+  model.attribute("height_m", report.cask.height);
+  model.attribute("rounding_radius_m", report.cask.rounding);
+  model.attribute("mass_kg", report.parameters.mass);
+  model.attribute("inertia_kg_m2", report.parameters.inertia);
+  model.attribute("axial_inertia_kg_m2", report.parameters.axial_inertia);
+  model.attribute("centre_of_mass_height_m", report.parameters.centre_of_mass.y);
+  model.attribute("standing_normal_stiffness_N_m", standing_stiffness(report.model.contacts));
+  model.attribute("tip_over_angle_rad", report.model.model.tip_over_angle);
+
+  if (!h.time.empty()) {
+    hdf5::Group history = root.group("history");
+    history.write("time", h.time, "s");
+    history.write("tilt", h.tilt, "rad");
+    history.write("tilt_azimuth", h.tilt_azimuth, "rad");
+    history.write("spin", h.spin, "rad");
+    history.write("rim_contact_azimuth", h.rim_azimuth, "rad");
+    history.write("slide_x", h.slide_x, "m");
+    history.write("slide_z", h.slide_z, "m");
+    history.write("uplift", h.uplift, "m");
+    history.write("centre_x", h.centre_x, "m");
+    history.write("centre_y", h.centre_y, "m");
+    history.write("centre_z", h.centre_z, "m");
+    history.write("table_x", h.table_x, "m/s^2");
+    history.write("table_z", h.table_z, "m/s^2");
+    history.write("table_vertical", h.table_vertical, "m/s^2");
+  }
+}
+
+}  // namespace caskdem
