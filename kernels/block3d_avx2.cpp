@@ -1,0 +1,6 @@
+// The 3D block kernel compiled for avx2 (flags set in kernels/CMakeLists.txt).
+#include "kernels/block3d_kernel.h"
+
+namespace caskdem::kernels {
+CASKDEM_ADVANCE_BLOCK3D(avx2);
+}  // namespace caskdem::kernels
