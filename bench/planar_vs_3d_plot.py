@@ -44,7 +44,7 @@ def main(rows_file, curves_file, png_file, title):
         ax.set_title(limit, fontsize=10)
         ax.set_xlabel("PGA [g] (planar: the component's; 3D: the pair's RotD50)")
         ax.grid(True, lw=0.3)
-        ax.set_xlim(0.0, 1.5)
+        ax.set_xlim(0.0, 2.1)
     axes[0].set_ylabel("probability of exceedance")
     axes[0].legend(fontsize=7, loc="upper left")
     fig.suptitle(title, fontsize=10)

@@ -337,6 +337,9 @@ MotionSpec read_motion(TableReader& t, bool three_d) {
       m.scale = t.quantity_or("scale", Dimension::dimensionless, 1.0);
       if (m.scale == 0.0) t.fail("scale", "expected a non-zero factor (a negative one reverses the record)");
     }
+    if (m.scaling == MotionSpec::Scaling::factor && !m.pair.empty() && t.has("intensity")) {
+      t.fail("intensity", "the pair's measure is what target_pga or target_pgv sets; give one of them, or leave intensity out");
+    }
   }
   if (three_d && m.kind != MotionSpec::Kind::record) {
     for (const char* key : {"pair", "vertical_file", "tails", "intensity"}) {

@@ -241,6 +241,8 @@ TEST_F(ThreeDimensionalErrors, EachIsNamedWithItsLine) {
        "rotd100"},
       {variant("no-pair", "pair = ", "# pair = "), "vertical_file =", "motion.vertical_file",
        "only a horizontal pair"},
+      {variant("factor", "target_pga = \"400 gal\"", "scale = 0.5"), "intensity =", "motion.intensity",
+       "give one of them"},
   };
   for (const Bad& b : cases) {
     const std::string e = error_of(b.file);
