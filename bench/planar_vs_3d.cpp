@@ -5,6 +5,11 @@
 //
 //   planar_vs_3d CASE3D.toml [--levels 0.2,0.3,...] (g) [--angles 6] [--replicates 200]
 //                [--csv ROWS.csv] [--curves CURVES.csv]
+//   planar_vs_3d CASE3D.toml --fs 0.005,0.01,0.02 [--levels ...]
+//
+// With --fs, the 3D fragility alone at each time-step safety factor on the same realisations
+// (one incidence: an axisymmetric cask's response turns with the pair), set against the first:
+// the fitted curves, and how many realisations change their outcome.
 //
 // CASE3D is a 3D case file ([cask] dimensions = 3): its cask, contact, friction, damping and
 // limits, and its motion's similarity scale (the records are prototype motions). The records
@@ -120,6 +125,58 @@ std::vector<double> parse_list(const std::string& text) {
   return out;
 }
 
+// The 3D fragility at each safety factor, on the same realisations: one per station and stripe.
+int step_study(const Case& c, const std::vector<Station>& sets, const std::vector<double>& levels,
+               const std::vector<double>& safety_factors) {
+  const Cylinder& cylinder = c.cask.cylinder;
+  const CaskSpec3D cask{0.5 * cylinder.diameter, cylinder.height, c.model.section.rounding, c.parameters.mass};
+  const RealisationParameters parameters = nominal_parameters3d(cask, c.parameters);
+  const double similarity = c.horizontal.similarity_scale;
+  const int count = static_cast<int>(sets.size() * levels.size());
+  std::vector<std::vector<Outcome>> outcomes;
+  for (double f : safety_factors) {
+    ModelSpec spec = c.model;
+    spec.safety_factor = f;
+    const Model3D model = build_model3d(spec, cask, parameters);
+    const LaneParameters<double> lane = lane_parameters3d(model, parameters);
+    std::vector<Outcome> out(count);
+    const double start = omp_get_wtime();
+#pragma omp parallel for schedule(dynamic, 1)
+    for (int j = 0; j < count; ++j) {
+      const motion::ComponentSet& set = sets[j / levels.size()].set;
+      const double factor = levels[j % levels.size()] * kG / motion::pair_intensity(set.h1, set.h2).pga_rotd50;
+      const auto h1 = motion::make_record_motion(prepared(set.h1, factor, similarity));
+      const auto h2 = motion::make_record_motion(prepared(set.h2, factor, similarity));
+      const auto up = set.vertical ? motion::make_record_motion(prepared(*set.vertical, factor, similarity)) : nullptr;
+      const RunResult3D r = simulate3d(model, lane, rest_state3d(model, lane), {h1.get(), h2.get(), up.get(), 0.0},
+                                       {h1->duration() + c.settle_time, 0.0});
+      out[j] = {r.summary.max_tilt_ratio, r.summary.status == LaneStatus::tipped_over};
+    }
+    std::printf("f_s %.3f (dt %.3g s): %d runs in %.0f s\n", f, model.model.time_step, count, omp_get_wtime() - start);
+    outcomes.push_back(std::move(out));
+  }
+  for (const auto& [limit_name, limit] : kLimitStates) {
+    for (std::size_t k = 0; k < safety_factors.size(); ++k) {
+      std::vector<std::int64_t> trials(levels.size(), 0), counts(levels.size(), 0);
+      int changed = 0;
+      for (int j = 0; j < count; ++j) {
+        const Outcome& o = outcomes[k][j];
+        const Outcome& reference = outcomes[0][j];
+        trials[j % levels.size()] += 1;
+        const bool exceeded = exceeds(o.ratio, o.tipped, limit);
+        counts[j % levels.size()] += exceeded;
+        changed += exceeded != exceeds(reference.ratio, reference.tipped, limit);
+      }
+      const fragility::LognormalFit fit = fragility::fit_lognormal(levels, trials, counts);
+      std::printf("%-20s f_s %.3f: median %.3f g, beta %.3f; %d of %d realisations change outcome from f_s %.3f;",
+                  limit_name.c_str(), safety_factors[k], fit.median, fit.log_std, changed, count, safety_factors[0]);
+      for (std::size_t l = 0; l < levels.size(); ++l) std::printf(" %lld", static_cast<long long>(counts[l]));
+      std::printf("\n");
+    }
+  }
+  return 0;
+}
+
 int run(int argc, char** argv) {
   if (argc < 2) {
     std::cerr << "usage: planar_vs_3d CASE3D.toml [--levels g,...] [--angles N] [--replicates N] [--csv F] [--curves F]\n";
@@ -128,6 +185,7 @@ int run(int argc, char** argv) {
   std::vector<double> levels = {0.2, 0.3, 0.4, 0.5, 0.6, 0.8, 1.0, 1.2};
   int angles = 6, replicates = 200;
   std::string csv, curves;
+  std::vector<double> safety_factors;
   for (int i = 2; i + 1 < argc; i += 2) {
     const std::string key = argv[i], value = argv[i + 1];
     if (key == "--levels") levels = parse_list(value);
@@ -135,12 +193,14 @@ int run(int argc, char** argv) {
     else if (key == "--replicates") replicates = std::stoi(value);
     else if (key == "--csv") csv = value;
     else if (key == "--curves") curves = value;
+    else if (key == "--fs") safety_factors = parse_list(value);
     else throw std::invalid_argument("unknown option " + key);
   }
   const Case c = load_case(argv[1]);
   if (c.cask.dimensions != 3) throw std::invalid_argument(std::string(argv[1]) + ": not a 3D case");
   const double similarity = c.horizontal.similarity_scale;
   const std::vector<Station> sets = stations();
+  if (!safety_factors.empty()) return step_study(c, sets, levels, safety_factors);
 
   // The models: 3D from the case, two planar readings of the same cylinder.
   const Cylinder& cylinder = c.cask.cylinder;

@@ -44,43 +44,30 @@ TEST(Convergence, TwentySecondsOfElCentroOnThePaperModel) {
   expect_converged(c);
 }
 
-// The cask in 3D (docs/cask3d.md): the same criterion on its max tilt, under a station's three
-// components: Kobe KJMA at RotD50 PGA 400 gal (the shipped case, 30 s) and Northridge Rinaldi at
-// 700 gal (rocking to about half of alpha), both compressed by sqrt 3 for the 1/3 model.
+// The cask in 3D (docs/cask3d.md): the same criterion on its max tilt under a station's three
+// components, Kobe KJMA at RotD50 PGA 400 gal (the shipped case, 30 s, compressed by sqrt 3).
+// Larger rocking is chaotic in 3D as in 2D: its step is verified on the fragility
+// (bench/planar_vs_3d --fs, docs/cask3d.md).
 RunSummary3D summary3d(Case c, double safety_factor) {
   c.model.safety_factor = safety_factor;
   return run_case3d(c, 0.0).result.summary;
 }
 
-void expect_converged3d(const Case& c) {
+TEST(Convergence, TheCaskIn3DUnderAStationsThreeComponents) {
+  Case c = load_case(testing::case_path("model-1-3-kobe-3d.toml"));
+  c.duration = 30.0;
   const RunSummary3D fine = summary3d(c, 0.005);
   const RunSummary3D coarse = summary3d(c, 0.01);
   const double change = coarse.max_tilt / fine.max_tilt - 1.0;
-  EXPECT_EQ(fine.status, LaneStatus::running) << c.name;
-  EXPECT_LT(std::abs(change), 0.005) << c.name << ": f_s 0.01 gives " << coarse.max_tilt << " rad, 0.005 gives "
-                                     << fine.max_tilt;
-  ::testing::Test::RecordProperty(c.name + "_change_0.01_vs_0.005", std::to_string(change));
-  for (double f : {0.01, 0.02, 0.05, 0.1}) {
-    const RunSummary3D s = f == 0.01 ? coarse : summary3d(c, f);
-    std::printf("%s: f_s %.3f max tilt %.6f rad = %.4f alpha (%+.3f %%), max slide %.5f m (%+.2f %%), spin %.4f rad\n",
-                c.name.c_str(), f, s.max_tilt, s.max_tilt_ratio, 100.0 * (s.max_tilt / fine.max_tilt - 1.0), s.max_slide,
-                100.0 * (s.max_slide / fine.max_slide - 1.0), s.spin);
+  EXPECT_EQ(fine.status, LaneStatus::running);
+  EXPECT_GT(fine.max_tilt_ratio, 0.05) << "it rocked";
+  EXPECT_LT(std::abs(change), 0.005) << "f_s 0.01 gives " << coarse.max_tilt << " rad, 0.005 gives " << fine.max_tilt;
+  RecordProperty("change_0.01_vs_0.005", std::to_string(change));
+  for (double f : {0.02, 0.05, 0.1}) {
+    const RunSummary3D s = summary3d(c, f);
+    std::printf("f_s %.3f max tilt %.6f rad (%+.3f %% from f_s 0.005), max slide %.5f m (%+.2f %%)\n", f, s.max_tilt,
+                100.0 * (s.max_tilt / fine.max_tilt - 1.0), s.max_slide, 100.0 * (s.max_slide / fine.max_slide - 1.0));
   }
-}
-
-TEST(Convergence, TheCaskIn3DUnderAStationsThreeComponents) {
-  Case kobe = load_case(testing::case_path("model-1-3-kobe-3d.toml"));
-  kobe.duration = 30.0;
-  expect_converged3d(kobe);
-  Case northridge = kobe;
-  northridge.name = "northridge-3d-700gal";
-  const std::filesystem::path dir = std::filesystem::path(CASKDEM_SHARED_DIR) / "motions" / "three-component";
-  northridge.horizontal.file = dir / "northridge1994_RSN1063_Rinaldi_H1_228.AT2";
-  northridge.horizontal.pair = dir / "northridge1994_RSN1063_Rinaldi_H2_318.AT2";
-  northridge.horizontal.vertical_file = dir / "northridge1994_RSN1063_Rinaldi_UP.AT2";
-  northridge.horizontal.scale = 7.0;  // target_pga, m/s^2
-  northridge.duration = 0.0;          // the record and the settle time
-  expect_converged3d(northridge);
 }
 
 }  // namespace
