@@ -34,6 +34,7 @@ void each_summary_figure(const RunReport3D& report, Put&& put) {
   put("residual_slide_m", s.residual_slide);
   put("max_uplift_m", s.max_uplift);
   put("spin_rad", s.spin);
+  put("rim_revolutions", s.rim_revolutions);
   put("instability_time_s", s.instability_time);
   put("end_time_s", s.end_time);
   put("time_step_s", s.time_step);
@@ -69,7 +70,8 @@ void print_summary3d(std::ostream& out, const RunReport3D& report) {
   out << "max tilt        " << s.max_tilt << " rad = " << s.max_tilt_ratio << " alpha\n";
   out << "sliding         max " << s.max_slide << " m, residual " << s.residual_slide << " m\n";
   out << "max uplift      " << s.max_uplift << " m\n";
-  out << "spin            " << s.spin << " rad about the axis\n";
+  out << "spin            " << s.spin << " rad about the axis; " << s.rim_revolutions
+      << " revolutions of the contact around the rim (rolling)\n";
   out << "result          " << status_name(s.status);
   if (s.status == LaneStatus::tipped_over) {
     out << " at t = " << s.end_time << " s (passed alpha at t = " << s.instability_time << " s)";

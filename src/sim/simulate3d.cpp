@@ -1,6 +1,7 @@
 #include "sim/simulate3d.h"
 
 #include <cmath>
+#include <numbers>
 #include <stdexcept>
 
 #include "kernels/step3d.h"
@@ -20,7 +21,13 @@ double acceleration(const motion::TableMotion* m, double t) { return m ? m->acce
 template <FrictionLaw Law>
 std::int64_t run_steps(const Run& run, BodyState3D<double>& body, ContactState3D<double>* points,
                        Response3D<double>& response, std::int64_t step_count, std::int64_t output_every,
-                       TimeHistory3D* history) {
+                       TimeHistory3D* history, double& rim_turn) {
+  // Rolling on the rim turns the place where it touches: the turn of the touching arc's
+  // direction, summed while the cask rides on its rim (the arc short of the whole ring) from one
+  // step to the next. Rocking in a plane adds nothing: its arc flips sides through upright,
+  // where the whole ring touches.
+  double last_azimuth = 0.0;
+  bool riding = false;
   const double dt = run.model.model.time_step;
   const double c = std::cos(run.excitation.incidence), s = std::sin(run.excitation.incidence);
   for (std::int64_t n = 0; n < step_count; ++n) {
@@ -50,6 +57,18 @@ std::int64_t run_steps(const Run& run, BodyState3D<double>& body, ContactState3D
       history->table_z.push_back(table_z);
       history->table_vertical.push_back(table_vertical);
     }
+    {
+      const kernels::Rotation<double> r = kernels::rotation_of(kernels::Quaternion<double>{body.qw, body.qx, body.qy, body.qz});
+      const kernels::RimTouch<double> rim = kernels::rim_touch(run.model.contacts, run.lane, r, body.y);
+      const bool on_rim = rim.arc.half_width > 0.0 && rim.arc.half_width < 1.0;
+      const double azimuth = std::atan2(rim.arc.towards_sin, rim.arc.towards_cos);
+      // A jump of more than a quarter turn in one step is the arc changing sides through upright
+      // between two steps, not rolling (which turns it by |w_s| dt, far less).
+      const double turn = std::abs(std::remainder(azimuth - last_azimuth, 2.0 * std::numbers::pi));
+      if (on_rim && riding && turn < 0.5 * std::numbers::pi) rim_turn += turn;
+      riding = on_rim;
+      last_azimuth = azimuth;
+    }
     kernels::step3d<Law>(run.model.model, run.model.contacts, run.lane, table_x, table_vertical, table_z, time, body,
                          points, response);
     if (response.status != 0.0) return n + 1;
@@ -74,11 +93,12 @@ RunResult3D simulate3d(const Model3D& model, const LaneParameters<double>& lane,
   TimeHistory3D* history = settings.output_interval > 0.0 ? &result.history : nullptr;
   const Run run{model, lane, excitation};
   std::int64_t done = 0;
+  double rim_turn = 0.0;
   switch (model.model.friction_law) {
-    case FrictionLaw::constant: done = run_steps<FrictionLaw::constant>(run, body, points.data(), response, steps, every, history); break;
-    case FrictionLaw::static_kinetic: done = run_steps<FrictionLaw::static_kinetic>(run, body, points.data(), response, steps, every, history); break;
-    case FrictionLaw::exponential: done = run_steps<FrictionLaw::exponential>(run, body, points.data(), response, steps, every, history); break;
-    case FrictionLaw::tabulated: done = run_steps<FrictionLaw::tabulated>(run, body, points.data(), response, steps, every, history); break;
+    case FrictionLaw::constant: done = run_steps<FrictionLaw::constant>(run, body, points.data(), response, steps, every, history, rim_turn); break;
+    case FrictionLaw::static_kinetic: done = run_steps<FrictionLaw::static_kinetic>(run, body, points.data(), response, steps, every, history, rim_turn); break;
+    case FrictionLaw::exponential: done = run_steps<FrictionLaw::exponential>(run, body, points.data(), response, steps, every, history, rim_turn); break;
+    case FrictionLaw::tabulated: done = run_steps<FrictionLaw::tabulated>(run, body, points.data(), response, steps, every, history, rim_turn); break;
   }
   RunSummary3D& s = result.summary;
   s.max_tilt = 2.0 * std::asin(std::min(1.0, 0.5 * std::sqrt(response.max_axis_departure)));
@@ -90,6 +110,7 @@ RunResult3D simulate3d(const Model3D& model, const LaneParameters<double>& lane,
   s.residual_slide = std::hypot(body.x + to_base.x - response.base_x0, body.z + to_base.z - response.base_z0);
   s.max_uplift = std::max(0.0, response.max_uplift);
   s.spin = response.spin;
+  s.rim_revolutions = rim_turn / (2.0 * std::numbers::pi);
   s.status = static_cast<LaneStatus>(static_cast<int>(response.status));
   s.end_time = s.status == LaneStatus::running ? static_cast<double>(done) * dt : response.end_time;
   s.instability_time = s.status == LaneStatus::tipped_over ? response.instability_time : -1.0;

@@ -39,6 +39,7 @@ struct RunSummary3D {
   double residual_slide = 0.0;  // m, at the end
   double max_uplift = 0.0;      // m
   double spin = 0.0;            // rad, at the end
+  double rim_revolutions = 0.0; // turns of the place on its rim where it touches, while riding on the rim (rolling)
   LaneStatus status = LaneStatus::running;
   double end_time = 0.0;        // s
   double instability_time = -1.0;

@@ -102,6 +102,7 @@ TEST(Cask3D, ShakenInItsPlaneItStaysThere) {
   RecordProperty("out_of_plane", std::to_string(out_of_plane));
   EXPECT_GT(run.summary.max_tilt_ratio, 0.1) << "it rocked";
   EXPECT_LT(out_of_plane, 1e-12);
+  EXPECT_EQ(run.summary.rim_revolutions, 0.0) << "rocking in a plane does not roll";
   EXPECT_LT(std::abs(run.final_state.qx) + std::abs(run.final_state.qy), 1e-12);
 }
 
@@ -292,6 +293,11 @@ TEST(Cask3D, RollsOnItsRimAtTheSteadyPrecessionRate) {
     EXPECT_NEAR(measured / rate, 1.0, 0.01) << "beta/alpha = " << ratio;
     EXPECT_NEAR(lowest / beta, 1.0, 0.02) << "beta/alpha = " << ratio;
     EXPECT_NEAR(highest / beta, 1.0, 0.02) << "beta/alpha = " << ratio;
+    // Seen from the body, the contact runs round the rim at -w_s (the precession's Omega cos b
+    // less the body's own Omega cos b + w_s): 10 |w_s| / Omega revolutions in ten turns.
+    const double revolutions = turns * std::abs(spin) / rate;
+    std::printf("  rim revolutions %.4f against %.4f\n", run.summary.rim_revolutions, revolutions);
+    EXPECT_NEAR(run.summary.rim_revolutions / revolutions, 1.0, 0.02) << "beta/alpha = " << ratio;
   }
 }
 
