@@ -22,17 +22,19 @@ struct BodyState3D {
   static constexpr int field_count = 13;
 };
 
-// The spring-slider of one contact point: its shear spring is a vector in the floor plane.
+// The spring-slider of one contact: its shear spring is a vector in the floor plane; the rim's
+// stiffness changes with the arc it touches on, so the last one is kept (kernels/step3d.h).
 template <class T>
 struct ContactState3D {
   T shear_x, shear_z;  // N
+  T stiffness;         // N/m, K_s when it last touched (0: it did not)
   T slipping;          // 1 if it slipped in the last step
 
   template <class F>
   void for_each_field(F&& f) {
-    f(shear_x); f(shear_z); f(slipping);
+    f(shear_x); f(shear_z); f(stiffness); f(slipping);
   }
-  static constexpr int field_count = 3;
+  static constexpr int field_count = 4;
 };
 
 // What a 3D realisation has done so far.

@@ -20,9 +20,10 @@
 // U = tan(phi / 4) = sin(phi/2) / (1 + cos(phi/2)) in [0, 1], so that no inverse cosine is
 // needed and the whole ring (U = 1) stays a finite interval; dpsi = 4 du / (1 + u^2), and with
 // w = psi / 2, cos w = (1 - u^2) / (1 + u^2), sin w = 2 u / (1 + u^2). The integrand is
-// analytic in u on [-1, 1] (poles at +-i), so the rule converges as (1 + sqrt 2)^(-4M): 16
-// nodes give the standing cask its ring's vertical stiffness to 1e-12 and its rocking
-// stiffness to 1e-7. Each node pushes with the 2D contact law's normal force at its share of
+// analytic in u on [-1, 1] (poles at +-i), so the rule converges as (1 + sqrt 2)^(-4M) for
+// the spring: 16 nodes give the standing cask its ring's vertical stiffness to 1e-12 and its
+// rocking stiffness to 1e-7. The no-tension clip of spring and dashpot together, and the soft
+// floor layer, put kinks inside the arc, where the rule converges only algebraically. Each node pushes with the 2D contact law's normal force at its share of
 // the ring's stiffness. Nodes come in mirror pairs psi, -psi, summed one after the other, so
 // that a cask shaken in its plane from a symmetric start stays in it exactly.
 //

@@ -81,6 +81,10 @@ inline void for_each_rim_node(const Contacts3D& contacts, const LaneParameters<T
 // vector, F_s* = F_s(previous) - K_s v_s dt, capped in magnitude at mu F_n along its own
 // direction (Cundall 1988), the stiffness-proportional dashpot -beta K_s v_s while it sticks,
 // and at most mu F_n transmitted, dashpot included. Returns the shear force on the cask.
+// The rim's K_s is that of the arc it touches on, which narrows and widens as the cask rocks:
+// springs that leave the arc take their share of the force with them (F_s(previous) scaled by
+// K_s / K_s(previous) when that is below 1), and springs that join it come unstretched (the
+// force kept). The centre's K_s is constant, and its force is kept as in 2D.
 template <FrictionLaw Law, class T, class Mask>
 inline Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p, const Mask& touching, const Mask& active,
                                 const T& normal, const T& shear_stiffness, const T& slip_x, const T& slip_z,
@@ -92,8 +96,11 @@ inline Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p, 
   const T slip_speed = lane::sqrt(slip_x * slip_x + slip_z * slip_z);
   const auto was_slipping = state.slipping > broadcast<T>(0.5);
   const T limit = friction_coefficient<Law>(model, p, slip_speed, was_slipping) * normal;
-  const T trial_x = state.shear_x - shear_stiffness * slip_x * dt;
-  const T trial_z = state.shear_z - shear_stiffness * slip_z * dt;
+  // Where it touched before (K_s(previous) > 0), the share of the springs still touching.
+  const auto had = state.stiffness > zero;
+  const T kept = select(had, lane::min(one, shear_stiffness / select(had, state.stiffness, one)), zero);
+  const T trial_x = state.shear_x * kept - shear_stiffness * slip_x * dt;
+  const T trial_z = state.shear_z * kept - shear_stiffness * slip_z * dt;
   const T trial = lane::sqrt(trial_x * trial_x + trial_z * trial_z);
   const auto slipping = touching && (trial > limit);
   // Both branches computed, blended per lane: slip caps the spring at mu F_n along its own
@@ -110,6 +117,7 @@ inline Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p, 
   const T clip = select(over, limit / select(over, magnitude, one), one);
   state.shear_x = select(active, spring_x, state.shear_x);
   state.shear_z = select(active, spring_z, state.shear_z);
+  state.stiffness = select(active, select(touching, shear_stiffness, zero), state.stiffness);
   state.slipping = select(active, lane::as_number<T>(slipping), state.slipping);
   return {shear_x * clip, zero, shear_z * clip};
 }

@@ -471,6 +471,9 @@ Case load_case(const std::filesystem::path& file) {
       if (!c.horizontal.vertical_file.empty()) {
         t.fail("vertical_file", "give the vertical either as vertical_file of the set or as [motion.vertical], not both");
       }
+      for (const char* key : {"pair", "vertical_file", "tails", "intensity", "incidence"}) {
+        if (v.has(key)) v.fail(key, "the vertical component has no pair or direction; give " + std::string(key) + " in [motion]");
+      }
       c.vertical = read_motion(v);
       v.reject_unknown_keys();
     }

@@ -34,6 +34,10 @@ void add_run(CLI::App& app) {
       if (c.horizontal.kind != MotionSpec::Kind::record) {
         throw InputError(located(c.file, 0, "--motion replaces a record's file, but [motion] kind is not \"record\""));
       }
+      if (!c.horizontal.pair.empty()) {
+        throw InputError(located(c.file, 0, "--motion replaces one record, and this case's motion is a station's set "
+                                            "(pair = ...): give the set's files in the case"));
+      }
       c.horizontal.file = options->motion_file;
     }
     const std::filesystem::path directory =

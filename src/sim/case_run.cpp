@@ -52,6 +52,7 @@ void check_step_count(const Case& c, const Model& model, double duration) {
 }  // namespace
 
 RunReport run_case(const Case& c, double output_interval) {
+  require_planar(c, "run_case");  // a 3D case runs by run_case3d (sim/case_run3d.h)
   RunReport report;
   report.source = &c;
   report.model = build_case_model(c);

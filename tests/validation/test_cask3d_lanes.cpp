@@ -108,7 +108,7 @@ TEST(Cask3DLanes, EveryLaneEqualsItsScalarRunBitForBit) {
     BodyState3D<Batch> body = to_batch<BodyState3D<Batch>>(bodies);
     Response3D<Batch> response = to_batch<Response3D<Batch>>(responses);
     std::vector<ContactState3D<Batch>> points(kContactSliders3D,
-                                              ContactState3D<Batch>{Batch(0.0), Batch(0.0), Batch(0.0)});
+                                              ContactState3D<Batch>{Batch(0.0), Batch(0.0), Batch(0.0), Batch(0.0)});
     for (int n = 0; n < steps; ++n) {
       const double t = n * model.model.time_step;
       const Batch x = batch_of([&](std::size_t l) { return setups[(first + l) % setups.size()].shake_x * std::sin(7.0 * t); });
@@ -144,10 +144,10 @@ TEST(Cask3DLanes, EveryLaneEqualsItsScalarRunBitForBit) {
 }
 
 // The 3D block kernel (kernels/block3d.h) on every instruction set this machine has, in one
-// block and in blocks of 5, against each realisation run alone by the deterministic 3D code
+// block and in blocks of 5, each advanced in calls of 2048 steps, against each realisation run alone by the deterministic 3D code
 // (sim/simulate3d.h): Northridge's three components (Rinaldi, compressed by sqrt 3, 8 s) at
 // RotD50 PGA from 0.4 to 1.6 g, at incidences over [0, 180) degrees, on friction 0.2 and 0.6; every
-// final state and result bit for bit.
+// final state and result bit for bit, and the sliders' states against the scalar lanes'.
 TEST(Cask3DLanes, BlocksGiveTheDeterministicRunsBitsOnEveryInstructionSet) {
   Case base = testing::one_third_model();
   base.model.friction_law = FrictionLaw::exponential;
@@ -204,7 +204,11 @@ TEST(Cask3DLanes, BlocksGiveTheDeterministicRunsBitsOnEveryInstructionSet) {
   EXPECT_GE(slid, 2);
   EXPECT_GE(rocked, 4);
 
-  const auto check = [&](InstructionSet isa, std::size_t block_size) {
+  // Each block advanced in calls of 2048 steps (chunked = true), as an ensemble advances it, or
+  // in one; the sliders' states of every lane kept for the comparison across instruction sets.
+  using Sliders = std::vector<double>;
+  const auto run_blocks = [&](InstructionSet isa, std::size_t block_size, bool chunked) {
+    std::vector<Sliders> sliders_of(realisations.size());
     for (std::size_t first = 0; first < realisations.size(); first += block_size) {
       const std::size_t count = std::min(block_size, realisations.size() - first);
       LaneBlock3D block(static_cast<std::int64_t>(count));
@@ -215,12 +219,20 @@ TEST(Cask3DLanes, BlocksGiveTheDeterministicRunsBitsOnEveryInstructionSet) {
         block.set_lane(static_cast<std::int64_t>(l), r.lane, rest, free, initial_response3d(r.lane, rest), r.incidence);
       }
       block.pad_from(0);
-      advance_block3d(isa, model.model, model.contacts, block, table_h1.data(), table_h2.data(), table_up.data(), 0, steps);
+      const int chunk = chunked ? 2048 : steps;
+      for (int done = 0; done < steps; done += chunk) {
+        advance_block3d(isa, model.model, model.contacts, block, table_h1.data(), table_h2.data(), table_up.data(), 0,
+                        std::min(chunk, steps - done));
+      }
       for (std::size_t l = 0; l < count; ++l) {
         const RunResult3D& alone = realisations[first + l].alone;
         BodyState3D<double> body;
+        ContactState3D<double> sliders[kContactSliders3D];
         Response3D<double> response;
-        block.get_lane(static_cast<std::int64_t>(l), &body, nullptr, &response);
+        block.get_lane(static_cast<std::int64_t>(l), &body, sliders, &response);
+        for (ContactState3D<double>& slider : sliders) {
+          slider.for_each_field([&](double& v) { sliders_of[first + l].push_back(v); });
+        }
         BodyState3D<double> expected = alone.final_state;
         std::vector<double> a, b;
         body.for_each_field([&](double& v) { a.push_back(v); });
@@ -234,6 +246,20 @@ TEST(Cask3DLanes, BlocksGiveTheDeterministicRunsBitsOnEveryInstructionSet) {
               << ": " << a[k] << " against " << b[k];
         }
       }
+    }
+    return sliders_of;
+  };
+  // The deterministic run keeps no sliders to compare with: the scalar lanes in one call are the
+  // reference for them.
+  const std::vector<Sliders> reference = run_blocks(InstructionSet::scalar, realisations.size(), false);
+  int sliding_at_end = 0;
+  for (const Sliders& s : reference) sliding_at_end += (s[0] != 0.0 || s[1] != 0.0);
+  EXPECT_GE(sliding_at_end, 2) << "the sliders' comparison needs stretched springs";
+  const auto check = [&](InstructionSet isa, std::size_t block_size) {
+    const std::vector<Sliders> sliders = run_blocks(isa, block_size, true);
+    for (std::size_t i = 0; i < sliders.size(); ++i) {
+      EXPECT_EQ(std::memcmp(sliders[i].data(), reference[i].data(), reference[i].size() * sizeof(double)), 0)
+          << instruction_set_name(isa) << ", blocks of " << block_size << ": realisation " << i << "'s sliders";
     }
   };
   for (InstructionSet isa : {InstructionSet::scalar, InstructionSet::sse2, InstructionSet::avx2, InstructionSet::avx512f}) {
