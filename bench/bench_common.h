@@ -58,4 +58,17 @@ inline double reported_clock_mhz() {
   return 0.0;
 }
 
+// Peak double-precision flops per second of one core: two FMA pipes, each a vector of
+// `width` doubles doing a multiply and an add per cycle.
+inline double core_peak(int width) { return 2.0 * width * 2.0 * reported_clock_mhz() * 1e6; }
+
+inline int width_of(InstructionSet isa) {
+  switch (isa) {
+    case InstructionSet::avx512f: return 8;
+    case InstructionSet::avx2: return 4;
+    case InstructionSet::sse2: return 2;
+    default: return 1;
+  }
+}
+
 }  // namespace caskdem::bench

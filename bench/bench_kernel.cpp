@@ -62,19 +62,6 @@ lane::OperationCount count_operations(FrictionLaw law) {
   return {total.flops / kSteps, total.other / kSteps};
 }
 
-// Peak double-precision flops per second of one core: two FMA pipes, each a vector of
-// `width` doubles doing a multiply and an add per cycle.
-double core_peak(int width) { return 2.0 * width * 2.0 * reported_clock_mhz() * 1e6; }
-
-int width_of(InstructionSet isa) {
-  switch (isa) {
-    case InstructionSet::avx512f: return 8;
-    case InstructionSet::avx2: return 4;
-    case InstructionSet::sse2: return 2;
-    default: return 1;
-  }
-}
-
 // The timed work of the kernel benchmarks: a fresh block of kLanes advanced kSteps under the
 // shipped sine, once per iteration.
 void advance_blocks(benchmark::State& state, InstructionSet isa, const Model& model, const RealisationParameters& nominal) {

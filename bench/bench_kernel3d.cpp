@@ -92,17 +92,6 @@ lane::OperationCount count_operations3d(const Cask3D& cask) {
   return {total.flops / kSteps, total.other / kSteps};
 }
 
-double core_peak(int width) { return 2.0 * width * 2.0 * reported_clock_mhz() * 1e6; }
-
-int width_of(InstructionSet isa) {
-  switch (isa) {
-    case InstructionSet::avx512f: return 8;
-    case InstructionSet::avx2: return 4;
-    case InstructionSet::sse2: return 2;
-    default: return 1;
-  }
-}
-
 void kernel3d(benchmark::State& state, InstructionSet isa) {
   if (!instruction_set_available(isa)) {
     state.SkipWithError((instruction_set_name(isa) + " is not available on this machine").c_str());

@@ -98,17 +98,21 @@ void write_history_csv(const std::filesystem::path& file, const RunReport& repor
   }
 }
 
+void write_run_attributes(hdf5::Group& root, const Case* source, double wall_seconds) {
+  root.attribute("caskdem_version", std::string(build_info::version));
+  if (source) {
+    root.attribute("case_file", source->file.string());
+    root.attribute("case_toml", read_text(source->file));
+    root.attribute("title", source->title);
+  }
+  root.attribute("wall_time_s", wall_seconds);
+}
+
 void write_run_hdf5(const std::filesystem::path& file, const RunReport& report) {
   const RunSummary& s = report.result.summary;
   const TimeHistory& h = report.result.history;
   hdf5::Group root = hdf5::create_file(file);
-  root.attribute("caskdem_version", std::string(build_info::version));
-  if (report.source) {
-    root.attribute("case_file", report.source->file.string());
-    root.attribute("case_toml", read_text(report.source->file));
-    root.attribute("title", report.source->title);
-  }
-  root.attribute("wall_time_s", report.wall_seconds);
+  write_run_attributes(root, report.source, report.wall_seconds);
 
   hdf5::Group summary = root.group("summary");
   summary.attribute("max_abs_rotation_rad", s.max_abs_rotation);

@@ -3,7 +3,6 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
-#include <sstream>
 #include <stdexcept>
 
 #include <nlohmann/json.hpp>
@@ -11,17 +10,11 @@
 #include "caskdem/build_info.h"
 #include "core/units.h"
 #include "io/hdf5_file.h"
+#include "io/run_output.h"
 
 namespace caskdem {
 
 namespace {
-
-std::string read_text(const std::filesystem::path& file) {
-  std::ifstream in(file);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // One list of the summary's figures, for the JSON and the HDF5 attributes alike.
 template <class Put>
@@ -111,14 +104,8 @@ void write_run_hdf5_3d(const std::filesystem::path& file, const RunReport3D& rep
   const RunSummary3D& s = report.result.summary;
   const TimeHistory3D& h = report.result.history;
   hdf5::Group root = hdf5::create_file(file);
-  root.attribute("caskdem_version", std::string(build_info::version));
+  write_run_attributes(root, report.source, report.wall_seconds);
   root.attribute("dimensions", std::int64_t(3));
-  if (report.source) {
-    root.attribute("case_file", report.source->file.string());
-    root.attribute("case_toml", read_text(report.source->file));
-    root.attribute("title", report.source->title);
-  }
-  root.attribute("wall_time_s", report.wall_seconds);
 
   hdf5::Group summary = root.group("summary");
   each_summary_figure(report, [&](const char* key, double value) { summary.attribute(key, value); });
