@@ -68,16 +68,29 @@ void LaneBlock3D::set_clock(std::int64_t lane, double step, std::int64_t table_i
   table_index_[lane] = table_index;
 }
 
-void LaneBlock3D::pad_from(std::int64_t source_lane) {
+void LaneBlock3D::stop_as_copy(std::int64_t lane, std::int64_t source_lane) {
   const std::int64_t stride = lane_count_;
-  for (std::int64_t lane = used_lanes_; lane < lane_count_; ++lane) {
-    // Every array is [field][lane]: copy each field's value across.
-    for (std::int64_t offset = 0; offset < clock_offset_ + stride; offset += stride) {
-      storage_[offset + lane] = storage_[offset + source_lane];
-    }
-    table_index_[lane] = table_index_[source_lane];
-    storage_[response_offset_ + lane] = double(LaneStatus::tipped_over);  // stopped: never advanced
+  // Every array is [field][lane]: copy each field's value across.
+  for (std::int64_t offset = 0; offset < clock_offset_ + stride; offset += stride) {
+    storage_[offset + lane] = storage_[offset + source_lane];
   }
+  table_index_[lane] = table_index_[source_lane];
+  storage_[response_offset_ + lane] = double(LaneStatus::tipped_over);  // stopped: never advanced
+}
+
+void LaneBlock3D::pad_from(std::int64_t source_lane) {
+  for (std::int64_t lane = used_lanes_; lane < lane_count_; ++lane) stop_as_copy(lane, source_lane);
+}
+
+double LaneBlock3D::clock(std::int64_t lane) const { return storage_[clock_offset_ + lane]; }
+
+double LaneBlock3D::status(std::int64_t lane) const { return storage_[response_offset_ + lane]; }
+
+bool LaneBlock3D::all_stopped() const {
+  for (std::int64_t lane = 0; lane < used_lanes_; ++lane) {
+    if (status(lane) == 0.0) return false;
+  }
+  return true;
 }
 
 void advance_block3d(InstructionSet isa, const Model& model, const Contacts3D& contacts, LaneBlock3D& block,

@@ -43,7 +43,13 @@ class LaneBlock3D {
   void get_lane(std::int64_t lane, BodyState3D<double>* body, ContactState3D<double>* sliders,
                 Response3D<double>* response) const;
   void pad_from(std::int64_t source_lane);  // padding lanes copy a real one, stopped
+  // The lane holds a copy of source_lane, stopped: an empty lane that is never advanced and
+  // whose numbers stay finite in the batch it rides in.
+  void stop_as_copy(std::int64_t lane, std::int64_t source_lane);
   void set_clock(std::int64_t lane, double step, std::int64_t table_index);
+  double clock(std::int64_t lane) const;
+  double status(std::int64_t lane) const;  // LaneStatus as a number
+  bool all_stopped() const;                // of the used lanes
 
   BlockView3D view();
 

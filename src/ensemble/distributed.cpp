@@ -13,11 +13,11 @@ namespace caskdem {
 
 namespace {
 
-constexpr int kOutcomeFields = 9;  // index + the 8 fields of RealisationOutcome
+constexpr int kOutcomeFields = 10;  // index + the 9 fields of RealisationOutcome
 
 void pack(std::int64_t index, const RealisationOutcome& o, std::vector<double>& out) {
   out.insert(out.end(), {double(index), double(o.status), o.max_abs_rotation, o.max_abs_slide, o.residual_slide,
-                         o.max_uplift, o.impacts, o.end_time, o.instability_time});
+                         o.max_uplift, o.impacts, o.end_time, o.instability_time, o.spin});
 }
 
 RealisationOutcome unpack(const double* p, std::int64_t* index) {
@@ -31,6 +31,7 @@ RealisationOutcome unpack(const double* p, std::int64_t* index) {
   o.impacts = p[6];
   o.end_time = p[7];
   o.instability_time = p[8];
+  o.spin = p[9];
   return o;
 }
 

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <numbers>
 #include <sstream>
 
 #include "core/error.h"
@@ -18,6 +19,7 @@ Dimension dimension_of(const std::string& parameter) {
   if (parameter == "friction_decay_speed") return Dimension::velocity;
   if (parameter == "mass") return Dimension::mass;
   if (parameter == "centre_height") return Dimension::length;
+  if (parameter == "incidence") return Dimension::angle;
   return Dimension::dimensionless;
 }
 
@@ -77,6 +79,10 @@ Distribution read_distribution(TableReader& t, const std::string& parameter) {
     if (d.kind != Distribution::Kind::lognormal && !(lowest > 0.0)) {
       t.fail(key, "expected a positive lower bound (give low for a normal distribution)");
     }
+  } else if (parameter == "incidence") {
+    // Any direction: a cylinder's response repeats every 180 degrees of a pair turned.
+    if (!(lowest >= -2.0 * std::numbers::pi && highest <= 2.0 * std::numbers::pi))
+      t.fail(key, "expected incidence angles within [-360, 360] degrees (bound a normal distribution with low and high)");
   } else if (!(lowest >= 0.0)) {
     t.fail(key, "a friction coefficient cannot be negative (give low = 0 or more for a normal distribution)");
   }
@@ -110,7 +116,7 @@ const KeySchema& ensemble_file_keys() {
     s.push_back(motions);
     s.push_back({"uncertain", uncertain_parameter_names()});
     s.push_back({"uncertain.*", {"distribution", "kind", "value", "low", "high", "mean", "std", "median", "log_std"}});
-    s.push_back({"intensity", {"measure", "period", "damping_ratio", "levels", "realisations"}});
+    s.push_back({"intensity", {"measure", "period", "damping_ratio", "levels", "realisations", "pair_measure"}});
     s.push_back({"sampling", {"method", "seed", "epistemic_points"}});
     s.push_back({"limit_states", {"tip_over", "rotation_ratio", "sliding"}});
     s.push_back({"fragility", {"bootstrap", "confidence"}});
@@ -138,7 +144,7 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
   c.file = file;
   c.name = e.name;
   c.title = e.title;
-  read_cask_and_contact(root, c);
+  read_cask_and_contact(root, c, /*three_d_allowed=*/true);
   if (root.has_table("free_vibration")) {
     TableReader t = root.table("free_vibration");
     c.free_vibration.initial_tilt_ratio =
@@ -170,7 +176,11 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
                     "target_pgv in [[motions]]");
       }
     }
-    MotionSpec m = read_motion(t);
+    // A realisation's direction is sampled ([uncertain] incidence), and one measure scales every
+    // pair ([intensity] pair_measure).
+    if (t.has("incidence")) t.fail("incidence", "an ensemble samples the incidence: give [uncertain] incidence instead");
+    if (t.has("intensity")) t.fail("intensity", "an ensemble scales every pair by one measure: give [intensity] pair_measure instead");
+    MotionSpec m = read_motion(t, e.three_d());
     if (m.kind == MotionSpec::Kind::none) t.fail("kind", "an ensemble motion must move the table");
     if (label.empty()) {
       label = m.kind == MotionSpec::Kind::record ? m.file.stem().string() : "motion " + std::to_string(i + 1);
@@ -210,6 +220,23 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
     if (e.uncertain.count("friction_static") && law == FrictionLaw::tabulated) {
       t.fail("friction_static", "a tabulated friction law cannot vary its coefficient");
     }
+    if (e.uncertain.count("incidence") && !e.three_d()) {
+      t.fail("incidence", "only a 3D cask ([cask] dimensions = 3) has an incidence: the planar model has one direction");
+    }
+    if (e.three_d() && e.uncertain.count("restitution")) {
+      t.fail("restitution", "the 3D cask's damping is the [damping] ratio: its restitution is not calibrated per realisation");
+    }
+    if (e.three_d() && e.uncertain.count("centre_height")) {
+      t.fail("centre_height", "the 3D cask is a solid cylinder with its centre of mass at mid-height");
+    }
+  }
+  // The horizontal pair comes from any direction unless the ensemble says otherwise.
+  if (e.three_d() && !e.uncertain.count("incidence")) {
+    Distribution any_direction;
+    any_direction.kind = Distribution::Kind::uniform;
+    any_direction.first = 0.0;
+    any_direction.second = std::numbers::pi;
+    e.uncertain["incidence"] = any_direction;
   }
 
   {
@@ -231,6 +258,15 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
       }
     } else if (t.has("period") || t.has("damping_ratio")) {
       t.fail(t.has("period") ? "period" : "damping_ratio", "only measure = \"sa\" has a period and a damping ratio");
+    }
+    if (e.three_d()) {
+      if (e.measure == IntensityMeasure::sa) t.fail("measure", "a 3D ensemble is scaled by its pairs' PGA or PGV (pga, pgv, pga_ratio or pgv_ratio)");
+      const std::string pair = t.choice("pair_measure", {"rotd50", "rotd100", "geometric_mean"}, "rotd50");
+      e.pair_measure = pair == "rotd100"          ? MotionSpec::PairMeasure::rotd100
+                       : pair == "geometric_mean" ? MotionSpec::PairMeasure::geometric_mean
+                                                  : MotionSpec::PairMeasure::rotd50;
+    } else if (t.has("pair_measure")) {
+      t.fail("pair_measure", "only a 3D cask ([cask] dimensions = 3) has horizontal pairs to measure");
     }
     const Dimension dimension = e.measure == IntensityMeasure::pga || e.measure == IntensityMeasure::sa ? Dimension::acceleration
                                 : e.measure == IntensityMeasure::pgv ? Dimension::velocity

@@ -37,8 +37,10 @@ struct LimitState {
 
 // The parameters that may vary, in the order of the sampler's dimensions.
 inline const std::vector<std::string>& uncertain_parameter_names() {
+  // incidence (3D only) last, so that a planar ensemble's dimensions keep their numbers
   static const std::vector<std::string> names = {"friction_static", "friction_kinetic", "friction_decay_speed",
-                                                 "restitution",     "mass",             "centre_height"};
+                                                 "restitution",     "mass",             "centre_height",
+                                                 "incidence"};
   return names;
 }
 
@@ -56,6 +58,9 @@ struct EnsembleSpec {
   std::set<std::string> epistemic;
   int epistemic_points = 30;
   IntensityMeasure measure = IntensityMeasure::pga;
+  // A 3D cask's horizontal pairs are scaled by this measure of the pair's PGA or PGV
+  // ([intensity] pair_measure); a single horizontal component by its own peak.
+  MotionSpec::PairMeasure pair_measure = MotionSpec::PairMeasure::rotd50;
   double spectral_period = 0.0;         // s, for sa
   double spectral_damping_ratio = 0.05;  // for sa
   std::vector<double> levels;                     // SI (or dimensionless), increasing
@@ -68,6 +73,7 @@ struct EnsembleSpec {
   int block_lanes = 64;
   double checkpoint_interval = 10.0;  // s of wall time between checkpoints
 
+  bool three_d() const { return base.cask.dimensions == 3; }
   int outer_count() const { return epistemic.empty() ? 1 : epistemic_points; }
   std::int64_t realisations_per_outer_point() const {
     return realisations_per_stripe * static_cast<std::int64_t>(levels.size());

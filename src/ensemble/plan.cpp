@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 #include "core/error.h"
@@ -9,6 +10,7 @@
 #include "kernels/step.h"
 #include "motion/response_spectrum.h"
 #include "sim/case_run.h"
+#include "sim/case_run3d.h"
 #include "sim/free_vibration.h"
 #include "sim/rigid_equivalent.h"
 
@@ -121,19 +123,48 @@ EnsemblePlan::EnsemblePlan(const EnsembleSpec& spec, InstructionSet isa)
   double lightest = nominal_.mass;
   if (auto it = spec_.uncertain.find("mass"); it != spec_.uncertain.end()) lightest = it->second.lowest();
   try {
-    Model provisional = build_model(model_spec_, nominal_);
-    model_spec_.time_step = model_spec_.safety_factor * 2.0 * std::sqrt(lightest / total_standing_normal_stiffness(provisional));
-    model_ = build_model(model_spec_, nominal_);
+    if (three_d()) {
+      // The solid cylinder's mass properties, then its step from the lightest realisation.
+      const Cylinder& cylinder = spec_.base.cask.cylinder;
+      const CaskSpec3D cask{0.5 * cylinder.diameter, cylinder.height, model_spec_.section.rounding, nominal_.mass};
+      nominal_ = nominal_parameters3d(cask, spec_.base.parameters);
+      if (cylinder.inertia) nominal_.inertia = *cylinder.inertia;
+      const Model3D provisional = build_model3d(model_spec_, cask, nominal_);
+      model_spec_.time_step = model_spec_.safety_factor * 2.0 * std::sqrt(lightest / standing_stiffness(provisional.contacts));
+      model3d_ = build_model3d(model_spec_, cask, nominal_);
+      model_ = model3d_.model;
+      frequency_parameter_ = model_.rocking_frequency;
+    } else {
+      Model provisional = build_model(model_spec_, nominal_);
+      model_spec_.time_step = model_spec_.safety_factor * 2.0 * std::sqrt(lightest / total_standing_normal_stiffness(provisional));
+      model_ = build_model(model_spec_, nominal_);
+      frequency_parameter_ = rigid_equivalent(model_, nominal_).frequency_parameter();
+    }
   } catch (const std::invalid_argument& e) {
     fail(e.what());
   }
-  frequency_parameter_ = rigid_equivalent(model_, nominal_).frequency_parameter();
 
   for (const MotionSpec& m : spec_.motions) {
-    motions_.push_back(make_motion(m));
+    std::optional<motion::PairIntensity> pair;
+    double duration = 0.0;
+    if (three_d()) {
+      CaseMotions3D set = make_motions3d(m, spec_.file);
+      pair = set.pair;
+      motions_.push_back(std::move(set.h1));
+      second_horizontal_.push_back(std::move(set.h2));
+      vertical_.push_back(std::move(set.vertical));
+      for (int c = 0; c < 3; ++c) {
+        if (const motion::TableMotion* component = this->component(motion_count() - 1, c)) {
+          duration = std::max(duration, component->duration());
+        }
+      }
+    } else {
+      motions_.push_back(make_motion(m));
+      duration = motions_.back()->duration();
+    }
     // Each realisation is held to the bounds of a case run, before the peaks are sought.
     const std::string& name = spec_.motion_names[intensities_.size()];
-    const double run = spec_.base.duration > 0.0 ? spec_.base.duration : motions_.back()->duration() + spec_.base.settle_time;
+    const double run = spec_.base.duration > 0.0 ? spec_.base.duration : duration + spec_.base.settle_time;
     const double steps = run / model_.time_step;
     if (!(run <= kLongestRun) || !(steps <= kMostSteps)) {
       fail("motion " + name + ": a realisation would last " + number_text(run) + " s in " + number_text(steps) +
@@ -144,7 +175,17 @@ EnsemblePlan::EnsemblePlan(const EnsembleSpec& spec, InstructionSet isa)
     MotionIntensity intensity;
     intensity.pga = motion::peak_acceleration(*motions_.back(), model_.time_step);
     intensity.pgv = motion::peak_velocity(*motions_.back(), model_.time_step);
-    intensity.duration = motions_.back()->duration();
+    intensity.duration = duration;
+    if (pair) {
+      // The pair as one intensity (Boore 2010's RotD or the geometric mean of the two).
+      switch (spec_.pair_measure) {
+        case MotionSpec::PairMeasure::rotd50: intensity.pga = pair->pga_rotd50, intensity.pgv = pair->pgv_rotd50; break;
+        case MotionSpec::PairMeasure::rotd100: intensity.pga = pair->pga_rotd100, intensity.pgv = pair->pgv_rotd100; break;
+        case MotionSpec::PairMeasure::geometric_mean:
+          intensity.pga = pair->pga_geometric_mean, intensity.pgv = pair->pgv_geometric_mean;
+          break;
+      }
+    }
     if (spec_.measure == IntensityMeasure::sa) {
       intensity.sa = motion::spectral_acceleration(*motions_.back(), spec_.spectral_period, spec_.spectral_damping_ratio,
                                                    model_.time_step);
@@ -167,6 +208,12 @@ EnsemblePlan::EnsemblePlan(const EnsembleSpec& spec, InstructionSet isa)
            number_text(d.highest()));
     }
   }
+}
+
+const motion::TableMotion* EnsemblePlan::component(int m, int c) const {
+  if (c == 0) return motions_[m].get();
+  if (!three_d()) return nullptr;
+  return c == 1 ? second_horizontal_[m].get() : vertical_[m].get();
 }
 
 double EnsemblePlan::run_duration(int m) const {
@@ -216,12 +263,16 @@ RealisationInput EnsemblePlan::realisation(std::int64_t index) const {
       p.damping_ratio = calibration_.damping_for(value);
     } else if (name == "mass") {
       p.inertia = nominal_.inertia * value / nominal_.mass;  // same shape, so inertia scales with mass
+      p.axial_inertia = nominal_.axial_inertia * value / nominal_.mass;
       p.mass = value;
+    } else if (name == "incidence") {
+      in.incidence = value;
     } else if (name == "centre_height") {
       p.centre_of_mass.y = value;
     }
   }
   p.horizontal_scale = in.scale_factor;
+  if (three_d()) p.vertical_scale = in.scale_factor;  // the station's components scale together
   return in;
 }
 

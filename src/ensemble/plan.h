@@ -14,6 +14,12 @@
 // o S + s, so outer point 0, and an ensemble without epistemic parameters, draw as before).
 // Independent inner samples keep each outer point's fit noise its own, which the estimate
 // of beta_U takes out (ensemble/epistemic.h); common draws would share it.
+//
+// A 3D ensemble ([cask] dimensions = 3) shares all of this: its model is the cylinder's
+// (model/build3d.h, whose Model carries the friction, step and criteria), each motion is a
+// station's components (the pair and the vertical, scaled together by one factor, so that the
+// pair's RotD50, RotD100 or geometric mean equals the stripe's level), and each realisation
+// draws its incidence, the direction of H1 in the floor plane, like any aleatory parameter.
 
 #include <cstdint>
 #include <memory>
@@ -23,6 +29,7 @@
 #include "kernels/block.h"
 #include "kernels/model.h"
 #include "model/build.h"
+#include "model/build3d.h"
 #include "motion/table_motion.h"
 
 namespace caskdem {
@@ -43,7 +50,7 @@ CalibrationCurve compute_calibration_curve(const Model& model, const ModelSpec& 
                                            InstructionSet isa, int points);
 
 struct MotionIntensity {
-  double pga = 0.0;       // m/s^2
+  double pga = 0.0;       // m/s^2 (3D: the pair's measure, [intensity] pair_measure)
   double pgv = 0.0;       // m/s
   double sa = 0.0;        // m/s^2, Sa(T, zeta) when the measure is sa (0 otherwise)
   double duration = 0.0;  // s (of the motion; runs add the settle time)
@@ -57,6 +64,7 @@ struct RealisationInput {
   double level = 0.0;         // the stripe's intensity level
   double scale_factor = 0.0;  // on the motion's acceleration
   double restitution = 0.0;   // sampled (0 when restitution is not uncertain)
+  double incidence = 0.0;     // rad, the direction of H1 (3D)
   RealisationParameters parameters;
 };
 
@@ -69,7 +77,12 @@ class EnsemblePlan {
   const ModelSpec& model_spec() const { return model_spec_; }
   std::int64_t size() const { return spec_.realisation_count(); }
   int motion_count() const { return static_cast<int>(motions_.size()); }
-  const motion::TableMotion& motion(int m) const { return *motions_[m]; }
+  const motion::TableMotion& motion(int m) const { return *motions_[m]; }  // 3D: its H1
+  bool three_d() const { return spec_.three_d(); }
+  const Model3D& model3d() const { return model3d_; }  // 3D ensembles
+  // Component c of motion m (0: H1, 1: H2, 2: the vertical), as read and unscaled; null where
+  // the motion has none (a planar motion has only its H1).
+  const motion::TableMotion* component(int m, int c) const;
   const MotionIntensity& intensity(int m) const { return intensities_[m]; }
   double run_duration(int m) const;  // motion duration + settle time
   const CalibrationCurve& calibration() const { return calibration_; }
@@ -88,6 +101,8 @@ class EnsemblePlan {
   RealisationParameters nominal_;
   Model model_;
   std::vector<std::unique_ptr<motion::TableMotion>> motions_;
+  std::vector<std::unique_ptr<motion::TableMotion>> second_horizontal_, vertical_;  // 3D
+  Model3D model3d_;
   std::vector<MotionIntensity> intensities_;
   CalibrationCurve calibration_;
   Sampler sampler_;

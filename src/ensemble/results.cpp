@@ -31,6 +31,10 @@ void for_each_double(EnsembleResults& r, F&& f) {
   f("end_time", r.end_time, "s");
   f("tip_over_time", r.tip_over_time, "s");
   f("instability_time", r.instability_time, "s");
+  if (r.three_d) {
+    f("incidence", r.incidence, "rad");
+    f("spin", r.spin, "rad");
+  }
 }
 
 template <class F>
@@ -62,7 +66,7 @@ void read_realisations(const std::filesystem::path& file, const hdf5::Group& roo
 
 }  // namespace
 
-EnsembleResults::EnsembleResults(const EnsemblePlan& plan) : size(plan.size()) {
+EnsembleResults::EnsembleResults(const EnsemblePlan& plan) : size(plan.size()), three_d(plan.three_d()) {
   const auto n = static_cast<std::size_t>(size);
   completed.assign(n, 0);
   for_each_double(*this, [n](const char*, std::vector<double>& v, const char*) { v.assign(n, 0.0); });
@@ -80,6 +84,7 @@ EnsembleResults::EnsembleResults(const EnsemblePlan& plan) : size(plan.size()) {
     damping_ratio[i] = in.parameters.damping_ratio;
     mass[i] = in.parameters.mass;
     centre_height[i] = in.parameters.centre_of_mass.y;
+    if (three_d) incidence[i] = in.incidence;
     tip_over_time[i] = -1.0;
     instability_time[i] = -1.0;
   }
@@ -97,6 +102,7 @@ void EnsembleResults::record(std::int64_t i, const RealisationOutcome& o, double
   end_time[i] = o.end_time;
   tip_over_time[i] = o.status == LaneStatus::tipped_over ? o.end_time : -1.0;
   instability_time[i] = o.instability_time;
+  if (three_d) spin[i] = o.spin;
 }
 
 std::int64_t EnsembleResults::completed_count() const {
@@ -136,10 +142,16 @@ std::vector<char> result_image(const std::filesystem::path& file, const Ensemble
     }
     // Realisations that went non-finite count in no stripe; their number is kept here.
     root.attribute("non_finite", non_finite);
+    root.attribute("dimensions", std::int64_t(plan.three_d() ? 3 : 2));
     root.attribute("time_step_s", plan.model().time_step);
     root.attribute("stability_angle_rad", plan.stability_angle());
     root.attribute("frequency_parameter_rad_s", plan.frequency_parameter());
     root.attribute("intensity_measure", intensity_name(spec.measure));
+    if (plan.three_d()) {
+      root.attribute("pair_measure", std::string(spec.pair_measure == MotionSpec::PairMeasure::rotd100          ? "rotd100"
+                                                 : spec.pair_measure == MotionSpec::PairMeasure::geometric_mean ? "geometric_mean"
+                                                                                                                : "rotd50"));
+    }
     if (spec.measure == IntensityMeasure::sa) {
       root.attribute("intensity_period_s", spec.spectral_period);
       root.attribute("intensity_damping_ratio", spec.spectral_damping_ratio);

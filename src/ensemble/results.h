@@ -27,15 +27,16 @@ namespace caskdem {
 
 struct EnsembleResults {
   std::int64_t size = 0;
+  bool three_d = false;  // a 3D ensemble also keeps incidence and spin
   std::vector<std::uint8_t> completed;
   // inputs, filled for every realisation from the plan
   std::vector<std::int64_t> stripe, motion;
   std::vector<double> level, scale_factor, friction_static, friction_kinetic, friction_decay_speed, restitution,
-      damping_ratio, mass, centre_height;
+      damping_ratio, mass, centre_height, incidence;
   // outcomes, valid where completed
   std::vector<std::int64_t> status, impacts;
   std::vector<double> max_abs_rotation, max_rotation_ratio, max_abs_slide, residual_slide, max_uplift, end_time,
-      tip_over_time, instability_time;
+      tip_over_time, instability_time, spin;
 
   EnsembleResults() = default;
   explicit EnsembleResults(const EnsemblePlan& plan);

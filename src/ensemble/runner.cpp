@@ -8,7 +8,9 @@
 
 #include <omp.h>
 
+#include "kernels/block3d.h"
 #include "kernels/step.h"
+#include "sim/simulate3d.h"
 
 namespace caskdem {
 
@@ -24,17 +26,36 @@ int batch_width(InstructionSet isa) {
   }
 }
 
-// A block's lanes and the realisations they hold.
-class Lanes {
+// Which realisation each lane of a block holds (planar or 3D alike).
+class Holdings {
  public:
-  Lanes(const EnsemblePlan& plan, int width)
-      : plan_(plan), block_(width, plan.model().corner_count), held_(width, -1), motion_(width, 0), parameters_(width) {}
-
-  LaneBlock& block() { return block_; }
+  explicit Holdings(int width) : held_(width, -1), motion_(width, 0), loaded_(width, false) {}
   int width() const { return static_cast<int>(held_.size()); }
   bool holds(int lane) const { return held_[lane] >= 0; }
+  bool loaded(int lane) const { return loaded_[lane]; }
   std::int64_t realisation(int lane) const { return held_[lane]; }
   int motion(int lane) const { return motion_[lane]; }
+  void hold(int lane, std::int64_t index, int motion) {
+    held_[lane] = index;
+    motion_[lane] = motion;
+    loaded_[lane] = true;
+  }
+  void release(int lane) { held_[lane] = -1; }
+
+ private:
+  std::vector<std::int64_t> held_;
+  std::vector<int> motion_;
+  std::vector<bool> loaded_;
+};
+
+// A planar block's lanes and the realisations they hold.
+class Lanes2D : public Holdings {
+ public:
+  using Block = LaneBlock;
+  Lanes2D(const EnsemblePlan& plan, int width)
+      : Holdings(width), plan_(plan), block_(width, plan.model().corner_count), parameters_(width) {}
+
+  LaneBlock& block() { return block_; }
   bool running(int lane) const { return holds(lane) && block_.status(lane) == 0.0; }
 
   void load(int lane, std::int64_t index, std::int64_t table_index) {
@@ -45,9 +66,7 @@ class Lanes {
     const CornerState<double> corners[kMaxCorners] = {};
     block_.set_lane(lane, parameters_[lane], body, corners, initial_response(parameters_[lane], body));
     block_.set_clock(lane, 0.0, table_index);
-    held_[lane] = index;
-    motion_[lane] = in.motion;
-    loaded_[lane] = true;
+    hold(lane, index, in.motion);
   }
 
   // Nothing left to load: the lane keeps its last realisation's numbers (lane 0's if it never
@@ -57,10 +76,10 @@ class Lanes {
     BodyState<double> body;
     CornerState<double> corners[kMaxCorners];
     Response<double> response;
-    block_.get_lane(loaded_[lane] ? lane : 0, &parameters, &body, corners, &response);
+    block_.get_lane(loaded(lane) ? lane : 0, &parameters, &body, corners, &response);
     response.status = double(LaneStatus::tipped_over);
     block_.set_lane(lane, parameters, body, corners, response);
-    held_[lane] = -1;
+    release(lane);
   }
 
   // The lane's result: its frozen state if it stopped, else its state at the end of its run.
@@ -82,35 +101,94 @@ class Lanes {
     return o;
   }
 
-  // Lanes that hold nothing (and the block's padding) read the start of the table: a stopped
-  // lane's index still advances with its batch, and must stay inside the table.
-  void park_idle() {
-    for (std::int64_t l = 0; l < block_.lane_count(); ++l) {
-      if (l >= width() || !holds(static_cast<int>(l))) block_.set_clock(l, 0.0, 0);
-    }
-  }
-
-  // Lane-steps of the next `steps` steps: every lane of a SIMD batch that has a running lane
-  // is computed, running or not.
-  void count(int steps, int batch, bool waiting, LaneOccupancy& occupancy) const {
-    for (int first = 0; first < block_.lane_count(); first += batch) {
-      int running_lanes = 0;
-      for (int l = first; l < std::min<int>(first + batch, width()); ++l) running_lanes += running(l);
-      if (running_lanes == 0) continue;
-      occupancy.lane_steps += double(batch) * steps;
-      occupancy.stopped_lane_steps += double(batch - running_lanes) * steps;
-      if (waiting) occupancy.stopped_while_waiting += double(batch - running_lanes) * steps;
-    }
+  void advance(InstructionSet isa, const MotionTables::Components& table, std::int64_t first_step, int steps) {
+    advance_block(isa, plan_.model(), block_, table[0], nullptr, first_step, steps);
   }
 
  private:
   const EnsemblePlan& plan_;
   LaneBlock block_;
-  std::vector<std::int64_t> held_;
-  std::vector<int> motion_;
   std::vector<LaneParameters<double>> parameters_;
-  std::vector<bool> loaded_ = std::vector<bool>(held_.size(), false);
 };
+
+// A 3D block's lanes (kernels/block3d.h), each at its realisation's incidence.
+class Lanes3D : public Holdings {
+ public:
+  using Block = LaneBlock3D;
+  Lanes3D(const EnsemblePlan& plan, int width) : Holdings(width), plan_(plan), block_(width), parameters_(width) {}
+
+  LaneBlock3D& block() { return block_; }
+  bool running(int lane) const { return holds(lane) && block_.status(lane) == 0.0; }
+
+  void load(int lane, std::int64_t index, std::int64_t table_index) {
+    const Model3D& model = plan_.model3d();
+    const RealisationInput in = plan_.realisation(index);
+    parameters_[lane] = lane_parameters3d(model, in.parameters);
+    const BodyState3D<double> body = rest_state3d(model, parameters_[lane]);
+    const ContactState3D<double> free[kContactSliders3D] = {};
+    block_.set_lane(lane, parameters_[lane], body, free, initial_response3d(parameters_[lane], body), in.incidence);
+    block_.set_clock(lane, 0.0, table_index);
+    hold(lane, index, in.motion);
+  }
+
+  void empty(int lane) {
+    block_.stop_as_copy(lane, loaded(lane) ? lane : 0);
+    release(lane);
+  }
+
+  // As the deterministic run sums it up (sim/simulate3d.h); the lanes count no impacts (-1).
+  RealisationOutcome harvest(int lane, std::int64_t steps) {
+    BodyState3D<double> body;
+    Response3D<double> response;
+    block_.get_lane(lane, &body, nullptr, &response);
+    const RunSummary3D s =
+        summarise3d(plan_.model3d(), parameters_[lane], body, response, static_cast<double>(steps) * plan_.model().time_step);
+    RealisationOutcome o;
+    o.status = s.status;
+    o.max_abs_rotation = s.max_tilt;
+    o.max_abs_slide = s.max_slide;
+    o.residual_slide = s.residual_slide;
+    o.max_uplift = s.max_uplift;
+    o.impacts = -1.0;
+    o.end_time = s.end_time;
+    o.instability_time = s.instability_time;
+    o.spin = s.spin;
+    return o;
+  }
+
+  void advance(InstructionSet isa, const MotionTables::Components& table, std::int64_t first_step, int steps) {
+    const Model3D& model = plan_.model3d();
+    advance_block3d(isa, model.model, model.contacts, block_, table[0], table[1], table[2], first_step, steps);
+  }
+
+ private:
+  const EnsemblePlan& plan_;
+  LaneBlock3D block_;
+  std::vector<LaneParameters<double>> parameters_;
+};
+
+// Lanes that hold nothing (and the block's padding) read the start of the table: a stopped
+// lane's index still advances with its batch, and must stay inside the table.
+template <class Lanes>
+void park_idle(Lanes& lanes) {
+  for (std::int64_t l = 0; l < lanes.block().lane_count(); ++l) {
+    if (l >= lanes.width() || !lanes.holds(static_cast<int>(l))) lanes.block().set_clock(l, 0.0, 0);
+  }
+}
+
+// Lane-steps of the next `steps` steps: every lane of a SIMD batch that has a running lane
+// is computed, running or not.
+template <class Lanes>
+void count(Lanes& lanes, int steps, int batch, bool waiting, LaneOccupancy& occupancy) {
+  for (int first = 0; first < lanes.block().lane_count(); first += batch) {
+    int running_lanes = 0;
+    for (int l = first; l < std::min<int>(first + batch, lanes.width()); ++l) running_lanes += lanes.running(l);
+    if (running_lanes == 0) continue;
+    occupancy.lane_steps += double(batch) * steps;
+    occupancy.stopped_lane_steps += double(batch - running_lanes) * steps;
+    if (waiting) occupancy.stopped_while_waiting += double(batch - running_lanes) * steps;
+  }
+}
 
 // What the threads share: the queue of realisations, the sink, the first failure.
 struct Shared {
@@ -145,6 +223,7 @@ struct Shared {
 
 // One thread's block with refill: lanes of any motion, each on its own clock, reading the
 // whole-run table; a lane that stopped or ran out its steps is replaced at the end of the chunk.
+template <class Lanes>
 void run_refilled(Shared& shared, const std::vector<std::int64_t>& queue) {
   const MotionTables& tables = shared.tables;
   const int batch = batch_width(shared.options.isa);
@@ -155,6 +234,7 @@ void run_refilled(Shared& shared, const std::vector<std::int64_t>& queue) {
   const std::int64_t first = claim();
   if (first < 0) return;
   Lanes lanes(shared.plan, std::max(1, std::min<int>(shared.options.lanes, static_cast<int>(queue.size()))));
+  const MotionTables::Components table = {tables.data(0), tables.data(1), tables.data(2)};
   lanes.load(0, first, tables.offset(shared.plan.realisation(first).motion));
   for (int l = 1; l < lanes.width(); ++l) {
     const std::int64_t i = claim();
@@ -183,7 +263,7 @@ void run_refilled(Shared& shared, const std::vector<std::int64_t>& queue) {
         lanes.empty(l);
       }
     }
-    lanes.park_idle();
+    park_idle(lanes);
     // The chunk ends where the first running lane ends its run, so that none runs past it.
     std::int64_t chunk = kChunk;
     bool any = false;
@@ -193,16 +273,16 @@ void run_refilled(Shared& shared, const std::vector<std::int64_t>& queue) {
       chunk = std::min(chunk, tables.steps(lanes.motion(l)) - static_cast<std::int64_t>(lanes.block().clock(l)));
     }
     LaneOccupancy counted;
-    if (any) lanes.count(static_cast<int>(chunk), batch, shared.next.load() < queue.size(), counted);
+    if (any) count(lanes, static_cast<int>(chunk), batch, shared.next.load() < queue.size(), counted);
     shared.report(indices, outcomes, counted);
     if (!any) break;
-    advance_block(shared.options.isa, shared.plan.model(), lanes.block(), tables.data(), nullptr, 0,
-                  static_cast<int>(chunk));
+    lanes.advance(shared.options.isa, table, 0, static_cast<int>(chunk));
   }
 }
 
 // One block of one motion in lockstep, on table motion sampled chunk by chunk, until all its
 // lanes have stopped or run out their steps.
+template <class Lanes>
 void run_lockstep(Shared& shared, int motion, const std::vector<std::int64_t>& indices) {
   const EnsemblePlan& plan = shared.plan;
   const Model& model = plan.model();
@@ -211,13 +291,21 @@ void run_lockstep(Shared& shared, int motion, const std::vector<std::int64_t>& i
   for (int l = 0; l < lanes.width(); ++l) lanes.load(l, indices[l], 0);
   if (lanes.block().lane_count() > lanes.width()) lanes.block().pad_from(0);
   const std::int64_t steps = shared.tables.steps(motion);
-  std::vector<double> horizontal(kChunk);
+  std::vector<double> sampled[3];
+  MotionTables::Components table = {};
+  for (int c = 0; c < 3; ++c) {
+    if (!plan.component(motion, c)) continue;
+    sampled[c].resize(kChunk);
+    table[c] = sampled[c].data();
+  }
   LaneOccupancy counted;
   for (std::int64_t first = 0; first < steps && !lanes.block().all_stopped() && !shared.failed; first += kChunk) {
-    const int count = static_cast<int>(std::min<std::int64_t>(kChunk, steps - first));
-    motion::sample_acceleration(plan.motion(motion), model.time_step, first, count, horizontal.data());
-    lanes.count(count, batch, shared.next.load() < shared.blocks, counted);
-    advance_block(shared.options.isa, model, lanes.block(), horizontal.data(), nullptr, first, count);
+    const int n = static_cast<int>(std::min<std::int64_t>(kChunk, steps - first));
+    for (int c = 0; c < 3; ++c) {
+      if (table[c]) motion::sample_acceleration(*plan.component(motion, c), model.time_step, first, n, sampled[c].data());
+    }
+    count(lanes, n, batch, shared.next.load() < shared.blocks, counted);
+    lanes.advance(shared.options.isa, table, first, n);
   }
   std::vector<RealisationOutcome> outcomes;
   for (int l = 0; l < lanes.width(); ++l) outcomes.push_back(lanes.harvest(l, steps));
@@ -228,17 +316,26 @@ void run_lockstep(Shared& shared, int motion, const std::vector<std::int64_t>& i
 
 MotionTables::MotionTables(const EnsemblePlan& plan, std::int64_t budget_bytes) {
   std::int64_t total = 0;
+  bool present[3] = {};
   for (int m = 0; m < plan.motion_count(); ++m) {
     offset_.push_back(total);
     steps_.push_back(static_cast<std::int64_t>(std::ceil(plan.run_duration(m) / plan.model().time_step)));
     total += steps_.back();
+    for (int c = 0; c < 3; ++c) present[c] = present[c] || plan.component(m, c);
   }
-  if (double(total) * sizeof(double) > double(budget_bytes)) return;
-  table_.resize(static_cast<std::size_t>(total));
-  for (int m = 0; m < plan.motion_count(); ++m) {
-    for (std::int64_t first = 0; first < steps_[m]; first += kChunk) {
-      const int count = static_cast<int>(std::min<std::int64_t>(kChunk, steps_[m] - first));
-      motion::sample_acceleration(plan.motion(m), plan.model().time_step, first, count, &table_[offset_[m] + first]);
+  const int components = int(present[0]) + int(present[1]) + int(present[2]);
+  if (double(total) * components * sizeof(double) > double(budget_bytes)) return;
+  for (int c = 0; c < 3; ++c) {
+    if (!present[c]) continue;
+    // A motion without this component (a 3D ensemble mixing sets and single records) reads zeros.
+    table_[c].assign(static_cast<std::size_t>(total), 0.0);
+    for (int m = 0; m < plan.motion_count(); ++m) {
+      const motion::TableMotion* component = plan.component(m, c);
+      if (!component) continue;
+      for (std::int64_t first = 0; first < steps_[m]; first += kChunk) {
+        const int count = static_cast<int>(std::min<std::int64_t>(kChunk, steps_[m] - first));
+        motion::sample_acceleration(*component, plan.model().time_step, first, count, &table_[c][offset_[m] + first]);
+      }
     }
   }
 }
@@ -250,7 +347,11 @@ void run_realisations(const EnsemblePlan& plan, const MotionTables& tables, cons
 #pragma omp parallel num_threads(options.threads)
     {
       try {
-        run_refilled(shared, realisations);
+        if (plan.three_d()) {
+          run_refilled<Lanes3D>(shared, realisations);
+        } else {
+          run_refilled<Lanes2D>(shared, realisations);
+        }
       } catch (...) {
         shared.fail();
       }
@@ -272,7 +373,11 @@ void run_realisations(const EnsemblePlan& plan, const MotionTables& tables, cons
     for (std::size_t b = shared.next.fetch_add(1); b < blocks.size(); b = shared.next.fetch_add(1)) {
       if (shared.failed) break;  // stop starting blocks once something failed
       try {
-        run_lockstep(shared, blocks[b].first, blocks[b].second);
+        if (plan.three_d()) {
+          run_lockstep<Lanes3D>(shared, blocks[b].first, blocks[b].second);
+        } else {
+          run_lockstep<Lanes2D>(shared, blocks[b].first, blocks[b].second);
+        }
       } catch (...) {
         shared.fail();
       }

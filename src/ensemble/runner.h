@@ -12,6 +12,7 @@
 // lockstep on tables sampled chunk by chunk instead, each until all its lanes have stopped
 // (the same results, more lane-steps on stopped lanes).
 
+#include <array>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -22,29 +23,33 @@ namespace caskdem {
 
 struct RealisationOutcome {
   LaneStatus status = LaneStatus::running;
-  double max_abs_rotation = 0.0;
+  double max_abs_rotation = 0.0;  // rad (3D: the axis' tilt from vertical)
   double max_abs_slide = 0.0;
   double residual_slide = 0.0;
   double max_uplift = 0.0;
-  double impacts = 0.0;
+  double impacts = 0.0;  // -1 in 3D: not counted
   double end_time = 0.0;
   double instability_time = -1.0;
+  double spin = 0.0;  // rad, about the cask's axis (3D)
 };
 
-// The horizontal table acceleration of every motion at every step of its run (steps 0 ..
-// steps(m) - 1 of motion m at offset(m)), end to end, or nothing when that exceeds the budget.
+// The table acceleration of every motion at every step of its run (steps 0 .. steps(m) - 1 of
+// motion m at offset(m)), end to end, one table per component that any motion has (the
+// horizontal; in 3D also the second horizontal and the vertical), or nothing when that exceeds
+// the budget.
 class MotionTables {
  public:
+  using Components = std::array<const double*, 3>;  // H1, H2, vertical; null where absent
   static constexpr std::int64_t kDefaultBudgetBytes = std::int64_t(1) << 29;  // 512 MiB
   explicit MotionTables(const EnsemblePlan& plan, std::int64_t budget_bytes = kDefaultBudgetBytes);
-  bool whole() const { return !table_.empty(); }
-  const double* data() const { return table_.data(); }
+  bool whole() const { return !table_[0].empty(); }
+  const double* data(int component = 0) const { return table_[component].empty() ? nullptr : table_[component].data(); }
   std::int64_t offset(int motion) const { return offset_[motion]; }
   std::int64_t steps(int motion) const { return steps_[motion]; }
 
  private:
   std::vector<std::int64_t> offset_, steps_;
-  std::vector<double> table_;
+  std::vector<double> table_[3];
 };
 
 struct RunOptions {

@@ -26,8 +26,7 @@ double pair_measure(const motion::PairIntensity& p, const MotionSpec& spec) {
 }
 
 // The set as one motion: one factor for every component, then the similarity's time scale.
-void make_set(const Case& c, CaseMotions3D& m) {
-  const MotionSpec& spec = c.horizontal;
+void make_set(const MotionSpec& spec, const std::filesystem::path& owner, CaseMotions3D& m) {
   const std::optional<std::filesystem::path> vertical =
       spec.vertical_file.empty() ? std::nullopt : std::optional<std::filesystem::path>(spec.vertical_file);
   motion::ComponentSet set = motion::read_component_set(spec.file, spec.pair, vertical, spec.read, spec.tails);
@@ -46,7 +45,7 @@ void make_set(const Case& c, CaseMotions3D& m) {
       if (spec.similarity_scale != 1.0) r = motion::time_scaled(r, time_factor);
       return r;
     } catch (const std::invalid_argument& e) {
-      throw InputError(located(c.file, 0, std::string(e.what()) + " (the motion at " + spec.where + ")"));
+      throw InputError(located(owner, 0, std::string(e.what()) + " (the motion at " + spec.where + ")"));
     }
   };
   motion::Record h1 = prepare(set.h1), h2 = prepare(set.h2);
@@ -58,17 +57,22 @@ void make_set(const Case& c, CaseMotions3D& m) {
 
 }  // namespace
 
+CaseMotions3D make_motions3d(const MotionSpec& spec, const std::filesystem::path& owner) {
+  CaseMotions3D m;
+  m.incidence = spec.incidence;
+  if (!spec.pair.empty()) {
+    make_set(spec, owner, m);
+  } else {
+    m.h1 = make_motion(spec);
+  }
+  return m;
+}
+
 CaseMotions3D make_case_motions3d(const Case& c) {
   if (c.horizontal.kind == MotionSpec::Kind::none && !c.vertical) {
     throw InputError(located(c.file, 0, "the case has no [motion]; `run` needs one"));
   }
-  CaseMotions3D m;
-  m.incidence = c.horizontal.incidence;
-  if (!c.horizontal.pair.empty()) {
-    make_set(c, m);
-  } else {
-    m.h1 = make_motion(c.horizontal);
-  }
+  CaseMotions3D m = make_motions3d(c.horizontal, c.file);
   if (c.vertical) m.vertical = make_motion(*c.vertical);
   return m;
 }

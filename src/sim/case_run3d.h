@@ -35,6 +35,10 @@ struct RunReport3D {
 
 // A record that cannot be read, a set whose components do not fit together or a scaling out of
 // range is an InputError naming the file.
+// One [motion] or [[motions]] table's components: a record's pair and the station's vertical
+// (scaled together by the spec's factor or to its target on the pair's measure), or one
+// horizontal component; `owner` is the file that names it.
+CaseMotions3D make_motions3d(const MotionSpec& spec, const std::filesystem::path& owner);
 CaseMotions3D make_case_motions3d(const Case& c);
 RunReport3D run_case3d(const Case& c, double output_interval);
 

@@ -100,7 +100,16 @@ RunResult3D simulate3d(const Model3D& model, const LaneParameters<double>& lane,
     case FrictionLaw::exponential: done = run_steps<FrictionLaw::exponential>(run, body, points.data(), response, steps, every, history, rim_turn); break;
     case FrictionLaw::tabulated: done = run_steps<FrictionLaw::tabulated>(run, body, points.data(), response, steps, every, history, rim_turn); break;
   }
+  result.summary = summarise3d(model, lane, body, response, static_cast<double>(done) * dt);
   RunSummary3D& s = result.summary;
+  s.rim_revolutions = rim_turn / (2.0 * std::numbers::pi);
+  result.final_state = body;
+  return result;
+}
+
+RunSummary3D summarise3d(const Model3D& model, const LaneParameters<double>& lane, const BodyState3D<double>& body,
+                         const Response3D<double>& response, double run_time) {
+  RunSummary3D s;
   s.max_tilt = 2.0 * std::asin(std::min(1.0, 0.5 * std::sqrt(response.max_axis_departure)));
   s.stability_angle = model.model.stability_angle;
   s.max_tilt_ratio = s.max_tilt / s.stability_angle;
@@ -110,13 +119,15 @@ RunResult3D simulate3d(const Model3D& model, const LaneParameters<double>& lane,
   s.residual_slide = std::hypot(body.x + to_base.x - response.base_x0, body.z + to_base.z - response.base_z0);
   s.max_uplift = std::max(0.0, response.max_uplift);
   s.spin = response.spin;
-  s.rim_revolutions = rim_turn / (2.0 * std::numbers::pi);
   s.status = static_cast<LaneStatus>(static_cast<int>(response.status));
-  s.end_time = s.status == LaneStatus::running ? static_cast<double>(done) * dt : response.end_time;
+  s.end_time = s.status == LaneStatus::running ? run_time : response.end_time;
   s.instability_time = s.status == LaneStatus::tipped_over ? response.instability_time : -1.0;
-  s.time_step = dt;
-  result.final_state = body;
-  return result;
+  s.time_step = model.model.time_step;
+  // A lane that went non-finite is frozen and flagged by its status; no NaN reaches a result.
+  for (double* v : {&s.max_tilt, &s.max_tilt_ratio, &s.max_slide, &s.residual_slide, &s.max_uplift, &s.spin}) {
+    if (!std::isfinite(*v)) *v = 0.0;
+  }
+  return s;
 }
 
 }  // namespace caskdem

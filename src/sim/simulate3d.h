@@ -52,6 +52,11 @@ struct RunResult3D {
   BodyState3D<double> final_state;
 };
 
+// The summary of a run from its final state and response (rim_revolutions, which only the
+// deterministic run follows, left 0); run_time is where a lane still running stopped.
+RunSummary3D summarise3d(const Model3D& model, const LaneParameters<double>& lane, const BodyState3D<double>& body,
+                         const Response3D<double>& response, double run_time);
+
 // Throws std::invalid_argument without a first horizontal component.
 RunResult3D simulate3d(const Model3D& model, const LaneParameters<double>& lane, const BodyState3D<double>& initial,
                        const Excitation3D& excitation, const RunSettings& settings);

@@ -92,6 +92,25 @@ TEST(Mpi, TwoAndThreeRanksGiveTheSingleProcessFile) {
   }
 }
 
+// The 3D lanes too: each rank's realisations, with their incidences and spins, as one process's.
+TEST(Mpi, TwoRanksGiveTheSingleProcess3DFile) {
+  const testing::TestDirectory directory;
+  const std::string ensemble = std::string(CASKDEM_SOURCE_DIR) + "/tests/ensemble/data/mpi-3d.toml";
+  const auto single = directory / "single3d.h5", distributed = directory / "ranks3d.h5";
+  ASSERT_EQ(run_shell(std::string(CASKDEM_BINARY) + " ensemble " + ensemble + " --out " + single.string() +
+                      " --threads 2 --quiet --no-plot")
+                .status,
+            0);
+  const testing::Outcome run = run_shell(kMpirun + " -n 2 " + CASKDEM_BINARY + " ensemble " + ensemble + " --out " +
+                                         distributed.string() + " --threads 1 --quiet --no-plot");
+  ASSERT_EQ(run.status, 0) << run.output;
+  expect_same_results(single, distributed);
+  const hdf5::Group a = hdf5::open_file(single).open_group("realisations");
+  const hdf5::Group b = hdf5::open_file(distributed).open_group("realisations");
+  for (const char* name : {"incidence", "spin"}) EXPECT_EQ(a.read_doubles(name), b.read_doubles(name)) << name;
+  EXPECT_EQ(hdf5::open_file(single).integer_attribute("dimensions"), 3);
+}
+
 TEST(Mpi, KilledRankLeavesAResumableFile) {
   const testing::TestDirectory directory;
   const auto single = directory / "single-for-resume.h5";
