@@ -33,6 +33,10 @@ def main(result_file, png_file):
         label, factor = UNITS[measure]
         if measure == "sa":
             label = "Sa(%g s, %g %%) [g]" % (f.attrs["intensity_period_s"], 100.0 * f.attrs["intensity_damping_ratio"])
+        if "pair_measure" in f.attrs and measure in ("pga", "pgv"):
+            # A 3D ensemble scales each station's pair by one measure of it.
+            pair = {"rotd50": "RotD50", "rotd100": "RotD100", "geometric_mean": "geometric-mean"}
+            label = pair.get(text(f.attrs["pair_measure"]), text(f.attrs["pair_measure"])) + " " + label
         title = text(f.attrs.get("title", ""))
         completed = int(f.attrs["completed"])
         total = int(f.attrs["realisations"])
