@@ -67,7 +67,7 @@ void read_cask(TableReader& root, Case& c, bool three_d_allowed) {
   if (dimensions == 3) {
     if (c.cask.shape != "cylinder") t.fail("dimensions", "the 3D cask is a cylinder: give shape = \"cylinder\"");
     // The 3D base is the whole circle (kernels/model3d.h): the planar footprint rules do not apply.
-    for (const char* key : {"half_width", "footprint", "footprint_points", "eccentricity"}) {
+    for (const char* key : {"half_width", "footprint", "footprint_points"}) {
       if (t.has(key)) t.fail(key, "a 3D cask stands on its whole circular base; leave " + std::string(key) + " out");
     }
   }

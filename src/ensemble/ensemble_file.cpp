@@ -226,9 +226,6 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
     if (e.three_d() && e.uncertain.count("restitution")) {
       t.fail("restitution", "the 3D cask's damping is the [damping] ratio: its restitution is not calibrated per realisation");
     }
-    if (e.three_d() && e.uncertain.count("centre_height")) {
-      t.fail("centre_height", "the 3D cask is a solid cylinder with its centre of mass at mid-height");
-    }
   }
   // The horizontal pair comes from any direction unless the ensemble says otherwise.
   if (e.three_d() && !e.uncertain.count("incidence")) {

@@ -126,7 +126,7 @@ EnsemblePlan::EnsemblePlan(const EnsembleSpec& spec, InstructionSet isa)
     if (three_d()) {
       // The solid cylinder's mass properties, then its step from the lightest realisation.
       const Cylinder& cylinder = spec_.base.cask.cylinder;
-      const CaskSpec3D cask{0.5 * cylinder.diameter, cylinder.height, model_spec_.section.rounding, nominal_.mass};
+      const CaskSpec3D cask = cask_spec3d(cylinder, model_spec_.section.rounding, nominal_.mass);
       nominal_ = nominal_parameters3d(cask, spec_.base.parameters);
       if (cylinder.inertia) nominal_.inertia = *cylinder.inertia;
       const Model3D provisional = build_model3d(model_spec_, cask, nominal_);

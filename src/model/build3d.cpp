@@ -50,12 +50,16 @@ double damping_beta3d(const Model3D& m, const RealisationParameters& p) {
 }
 }  // namespace
 
+CaskSpec3D cask_spec3d(const Cylinder& cylinder, double rounding, double mass) {
+  return {0.5 * cylinder.diameter, cylinder.height, rounding, mass, cylinder.eccentricity};
+}
+
 RealisationParameters nominal_parameters3d(const CaskSpec3D& cask, const RealisationParameters& base) {
   RealisationParameters p = base;
   p.mass = cask.mass;
   p.inertia = cask.mass * (cask.radius * cask.radius / 4.0 + cask.height * cask.height / 12.0);
   p.axial_inertia = cask.mass * cask.radius * cask.radius / 2.0;
-  p.centre_of_mass = {0.0, 0.5 * cask.height};
+  p.centre_of_mass = {cask.eccentricity, 0.5 * cask.height};
   return p;
 }
 
@@ -72,6 +76,8 @@ Model3D build_model3d(const ModelSpec& spec, const CaskSpec3D& cask, const Reali
   Model3D out;
   Contacts3D& c = out.contacts;
   const double R = cask.radius, r = cask.rounding, ring = R - r;
+  const double eccentricity = std::abs(nominal.centre_of_mass.x);
+  if (!(eccentricity < ring)) throw std::invalid_argument("the eccentricity puts the centre of mass outside the base");
   const double area = std::numbers::pi * R * R, base_inertia = std::numbers::pi * std::pow(R, 4) / 4.0;
   const double scale = spec.contact_stiffness_scale;
   const double normal_total = scale * spec.stiffness.normal * area;
@@ -105,14 +111,15 @@ Model3D build_model3d(const ModelSpec& spec, const CaskSpec3D& cask, const Reali
   m.gravity = spec.gravity;
   if (!(spec.safety_factor > 0.0)) throw std::invalid_argument("the safety factor must be positive");
   m.time_step = spec.time_step > 0.0 ? spec.time_step : spec.safety_factor * 2.0 * std::sqrt(nominal.mass / standing_stiffness(c));
-  // The centre of mass passes over the pivot (a ring point's sphere centre) at alpha.
-  m.stability_angle = std::atan2(ring, nominal.centre_of_mass.y - r);
+  // The centre of mass passes over the pivot (a ring point's sphere centre) at alpha; first
+  // over the ring point nearest to it, towards the eccentricity.
+  m.stability_angle = std::atan2(ring - eccentricity, nominal.centre_of_mass.y - r);
   m.tip_over_angle = spec.tip_over_angle > 0.0 ? spec.tip_over_angle : 0.5 * std::numbers::pi;
   if (m.tip_over_angle <= m.stability_angle) throw std::invalid_argument("the tip-over angle must exceed alpha");
   m.lift_off_height = spec.lift_off_height > 0.0 ? spec.lift_off_height : 0.25 * cask.height;
   m.pad_clearance = spec.pad_half_width > 0.0 ? spec.pad_half_width - R : 0.0;
   if (spec.pad_half_width > 0.0 && !(m.pad_clearance > 0.0)) throw std::invalid_argument("the pad is narrower than the cask");
-  const double pivot = std::hypot(ring, nominal.centre_of_mass.y - r);
+  const double pivot = std::hypot(ring - eccentricity, nominal.centre_of_mass.y - r);
   m.rocking_frequency = std::sqrt(nominal.mass * m.gravity * pivot / (nominal.inertia + nominal.mass * pivot * pivot));
   c.tip_departure = departure_of(m.tip_over_angle);
   c.stability_departure = departure_of(m.stability_angle);

@@ -23,19 +23,25 @@ struct CaskSpec3D {
   double height = 0.0;    // H, m
   double rounding = 0.0;  // r of the base rim, m
   double mass = 0.0;      // kg
+  double eccentricity = 0.0;  // m, the centre of mass off the axis (along body x), as in 2D
 };
+
+// The 3D cask of a case's cylinder ([cask] dimensions = 3).
+CaskSpec3D cask_spec3d(const Cylinder& cylinder, double rounding, double mass);
 
 struct Model3D {
   Model model;  // friction law, gravity, time step, criteria (its 2D corners unused)
   Contacts3D contacts;
 };
 
-// The solid cylinder's mass, I_1, I_3 and centre of mass (on the axis at H / 2).
+// The solid cylinder's mass, I_1, I_3 and centre of mass (at H / 2, off the axis by the
+// eccentricity: eccentric contents, the cylinder's moments of inertia kept about it).
 RealisationParameters nominal_parameters3d(const CaskSpec3D& cask, const RealisationParameters& base);
 
 // Friction, damping and integration from `spec` (its section unused; its contact stiffness is
 // the base's distributed k_n and k_s). Throws std::invalid_argument for a cask that cannot
-// stand (a rounding not smaller than R / 4) or an unstable step.
+// stand (a rounding not smaller than R / 4, a centre of mass not over the ring) or an unstable
+// step. alpha is the smallest stability angle, towards the eccentricity: atan((R_c - e) / (h - r)).
 Model3D build_model3d(const ModelSpec& spec, const CaskSpec3D& cask, const RealisationParameters& nominal);
 
 // One realisation's lane parameters: the 2D ones (model/build.h), with the axial inertia and

@@ -81,7 +81,7 @@ RunReport3D run_case3d(const Case& c, double output_interval) {
   RunReport3D report;
   report.source = &c;
   const Cylinder& cylinder = c.cask.cylinder;
-  report.cask = {0.5 * cylinder.diameter, cylinder.height, c.model.section.rounding, c.parameters.mass};
+  report.cask = cask_spec3d(cylinder, c.model.section.rounding, c.parameters.mass);
   report.parameters = nominal_parameters3d(report.cask, c.parameters);
   if (cylinder.inertia) report.parameters.inertia = *cylinder.inertia;
   LaneParameters<double> lane;

@@ -176,8 +176,6 @@ TEST_F(Ensemble3DErrors, EachRefusalNamesItsKey) {
        "key motions[1].intensity: an ensemble scales every pair by one measure: give [intensity] pair_measure instead"},
       {"restitution", "[intensity]", "[uncertain.restitution]\ndistribution = \"uniform\"\nlow = 0.9\nhigh = 0.95\n\n[intensity]",
        "key uncertain.restitution: the 3D cask's damping is the [damping] ratio"},
-      {"centre-height", "[intensity]", "[uncertain.centre_height]\ndistribution = \"uniform\"\nlow = \"0.9 m\"\nhigh = \"1.1 m\"\n\n[intensity]",
-       "key uncertain.centre_height: the 3D cask is a solid cylinder"},
       {"sa", "measure = \"pga\"", "measure = \"sa\"\nperiod = \"0.5 s\"",
        "key intensity.measure: a 3D ensemble is scaled by its pairs' PGA or PGV"},
       {"pair-measure", "measure = \"pga\"", "measure = \"pga\"\npair_measure = \"rotd75\"", "key intensity.pair_measure"},

@@ -157,8 +157,7 @@ TEST(Cask3D, QuarterPeriodFollowsHousnerForTheCylinderInTheStiffLimit) {
 // Raised smoothly over 10 s to `fraction` of g tan(alpha) along `direction` (half a cosine: near
 // the onset the cask's rocking stiffness falls towards zero, and a sudden hold would overshoot),
 // then held 3 s: the tilt at the end.
-double held_tilt(const Cask& c, double fraction, double direction) {
-  const double peak = fraction * c.model.model.gravity * std::tan(c.model.model.stability_angle);
+double held_tilt_at(const Cask& c, double peak, double direction) {
   const double ramp = 10.0, hold = 3.0;
   testing::FunctionMotion motion(
       [=](double t) { return t < ramp ? 0.5 * peak * (1.0 - std::cos(std::numbers::pi * t / ramp)) : peak; }, ramp + hold);
@@ -166,6 +165,10 @@ double held_tilt(const Cask& c, double fraction, double direction) {
   shaking.incidence = direction;
   const RunResult3D run = simulate3d(c.model, c.lane, rest_state3d(c.model, c.lane), shaking, {ramp + hold, 0.0});
   return run.summary.status == LaneStatus::tipped_over ? std::numbers::pi / 2 : axis_tilt(run.final_state);
+}
+
+double held_tilt(const Cask& c, double fraction, double direction) {
+  return held_tilt_at(c, fraction * c.model.model.gravity * std::tan(c.model.model.stability_angle), direction);
 }
 
 // In the stiff limit the cask stands at 1 % below g tan(alpha) and tips over at 1 % above.
@@ -188,6 +191,42 @@ TEST(Cask3D, RockingStartsAtTheSameAccelerationWhicheverWayItIsPushed) {
     const double direction = degrees * std::numbers::pi / 180.0;
     EXPECT_LT(held_tilt(c, 0.96, direction), 0.05 * alpha) << degrees << " degrees";
     EXPECT_GT(held_tilt(c, 0.97, direction), alpha) << degrees << " degrees";
+  }
+}
+
+// A centre of mass e off the axis (along body x), at height h_c above the floor: the upright
+// cask lifts off about the point where its rounded rim touches the floor, R_c from the axis,
+// and the weight's lever about it is R_c - e towards the eccentricity and R_c + e away from it,
+// so rocking starts at g (R_c -+ e) / h_c (statics of the rigid body); pushed along z it leans
+// over a rim point at R_c from the axis and e aside, lever sqrt(R_c^2 - e^2). In the stiff
+// limit: stands at 1 % below each and tips over at 1 % above. The model's alpha, the angle at
+// which the centre of mass passes over the rim's sphere centre, is the smallest, towards the
+// eccentricity: atan((R_c - e) / (h_c - r)).
+TEST(Cask3D, AnEccentricCentreOfMassRocksFirstTowardsItsSide) {
+  Cask c = one_third_model(100.0);
+  c.spec.eccentricity = 0.05;
+  c.parameters = nominal_parameters3d(c.spec, c.base.parameters);
+  c.parameters.friction_static = c.parameters.friction_kinetic = 2.0;
+  c.parameters.damping_ratio = 0.056;
+  c.parameters.damping_frequency = 0.0;
+  c.model = build_model3d(c.base.model, c.spec, c.parameters);
+  c.lane = lane_parameters3d(c.model, c.parameters);
+  ASSERT_EQ(c.parameters.centre_of_mass.x, 0.05);
+  const double ring = c.spec.radius - c.spec.rounding, h = c.parameters.centre_of_mass.y;
+  const double e = c.spec.eccentricity, g = c.model.model.gravity;
+  EXPECT_NEAR(c.model.model.stability_angle, std::atan((ring - e) / (h - c.spec.rounding)), 1e-15);
+  // The table accelerating along +x throws the cask towards -x, over the rim point away from
+  // the eccentricity; along -x (incidence pi), towards it; along +z, sideways.
+  struct Push {
+    double direction, lever;
+  };
+  for (const Push push : {Push{std::numbers::pi, ring - e}, Push{0.0, ring + e},
+                          Push{0.5 * std::numbers::pi, std::sqrt(ring * ring - e * e)}}) {
+    const double onset = g * push.lever / h;
+    EXPECT_LT(held_tilt_at(c, 0.99 * onset, push.direction), 0.05 * c.model.model.stability_angle)
+        << "pushed along " << push.direction << " rad";
+    EXPECT_GT(held_tilt_at(c, 1.01 * onset, push.direction), c.model.model.stability_angle)
+        << "pushed along " << push.direction << " rad";
   }
 }
 
