@@ -62,7 +62,7 @@ void read_cask(TableReader& root, Case& c, bool three_d_allowed) {
   if (dimensions != 2 && dimensions != 3) t.fail("dimensions", "expected 2 (the planar model) or 3 (the cylinder in 3D)");
   c.cask.dimensions = static_cast<int>(dimensions);
   if (dimensions == 3 && !three_d_allowed) {
-    t.fail("dimensions", "the 3D cask runs from a case file (`caskdem run`); ensembles and measured specimens are planar");
+    t.fail("dimensions", "the 3D cask runs from case and ensemble files; measured specimens are planar");
   }
   if (dimensions == 3) {
     if (c.cask.shape != "cylinder") t.fail("dimensions", "the 3D cask is a cylinder: give shape = \"cylinder\"");
@@ -87,6 +87,10 @@ void read_cask(TableReader& root, Case& c, bool three_d_allowed) {
       cylinder.height = t.positive("height", t.quantity("height", Dimension::length));
       cylinder.mass = mass ? *mass : *density * std::numbers::pi / 4.0 * cylinder.diameter * cylinder.diameter * cylinder.height;
       cylinder.inertia = inertia;
+      if (auto axial = t.optional_quantity("axial_inertia", Dimension::moment_of_inertia)) {
+        if (dimensions != 3) t.fail("axial_inertia", "only a 3D cask ([cask] dimensions = 3) turns about its axis");
+        cylinder.axial_inertia = t.positive("axial_inertia", *axial);
+      }
       // Two corners at a half-width rule's b, or a distributed circular footprint (model/section.h).
       const bool distributed = t.choice("footprint", {"corners", "distributed"}, "corners") == "distributed";
       const std::string default_rule = distributed ? "radius" : "gyration";
@@ -420,7 +424,7 @@ const std::vector<std::string>& motion_keys() {
 const KeySchema& shared_case_keys() {
   static const KeySchema schema = {
       {"cask", {"shape", "dimensions", "rounding", "mass", "density", "inertia", "diameter", "height", "half_width", "footprint",
-                "footprint_points", "eccentricity", "vertices", "depth", "centre_of_mass"}},
+                "footprint_points", "eccentricity", "axial_inertia", "vertices", "depth", "centre_of_mass"}},
       {"contact", {"normal_stiffness", "shear_stiffness", "barkan"}},
       {"contact.barkan", {"shear_modulus", "poisson_ratio", "beta_z", "beta_x"}},
       {"friction", {"law", "coefficient", "static", "kinetic", "decay_speed", "table", "table_file"}},

@@ -60,6 +60,7 @@ struct Cylinder {
   double height = 0.0;    // m
   double mass = 0.0;      // kg
   std::optional<double> inertia;  // kg m^2 about a horizontal diameter through the centre of mass
+  std::optional<double> axial_inertia;  // kg m^2 about the axis (the 3D cask; m R^2 / 2 when not given)
   HalfWidthRule rule = HalfWidthRule::gyration;
   double eccentricity = 0.0;  // m: horizontal offset of the centre of mass from the axis
   // 0: two corners at +-b (the rule above); N >= 3: a distributed footprint of N contacts

@@ -170,15 +170,15 @@ similarity_scale = 3
   while (std::getline(csv, line)) ++rows;
   EXPECT_EQ(rows, 600) << "6 s sampled every 0.01 s (whole steps) from t = 0, as a planar run is";
 
-  // The commands that run the planar model refuse a 3D cask rather than run it flat; --motion
-  // cannot stand in for a whole set.
+  // The commands that run the planar model refuse a 3D cask rather than run it flat; an
+  // ensemble takes one but not the planar base's keys; --motion cannot stand in for a whole set.
   const auto ensemble = variant_of(std::string(CASKDEM_SOURCE_DIR) + "/ensembles/model-1-3-builtin.toml",
                                    "ensemble-3d.toml", "shape = \"cylinder\"", "shape = \"cylinder\"\ndimensions = 3");
   for (const auto& [arguments, message] :
        {std::pair{"calibrate " + file.string(), std::string("`calibrate` runs the planar model")},
         std::pair{"sweep " + file.string() + " --out " + (dir_ / "s").string(), std::string("`sweep` runs the planar model")},
         std::pair{"ensemble " + ensemble.string() + " --out " + (dir_ / "e.h5").string(),
-                  std::string("key cask.dimensions")},
+                  std::string("key cask.half_width: a 3D cask stands on its whole circular base")},
         std::pair{"run " + file.string() + " --motion " + sets + "elcentro1940_RSN6_H1_180.AT2",
                   std::string("--motion replaces one record, and this case's motion is a station's set")}}) {
     const Outcome refused = run_caskdem(arguments);

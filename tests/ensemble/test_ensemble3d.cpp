@@ -138,9 +138,9 @@ TEST(Ensemble3D, IncidenceIsUniformOverHalfATurnByDefault) {
   EXPECT_EQ(in.parameters.vertical_scale, in.parameters.horizontal_scale);
 }
 
+// The 3D test ensemble, its records named by absolute paths, with `find` replaced.
 class Ensemble3DErrors : public testing::TemporaryFiles {
  protected:
-  // The 3D test ensemble with `find` replaced, its records named by absolute paths.
   std::filesystem::path variant(const std::string& name, const std::string& find, const std::string& replace) const {
     std::string text = testing::file_text(kEnsemble);
     for (std::size_t at; (at = text.find("../../../../shared")) != std::string::npos;) {
@@ -152,6 +152,27 @@ class Ensemble3DErrors : public testing::TemporaryFiles {
     return write(name + ".toml", text);
   }
 };
+
+// The solid cylinder's I_1 = m (R^2 / 4 + H^2 / 12) and I_3 = m R^2 / 2 unless [cask] gives
+// them, and with an uncertain mass both scale with it (the same shape); the eccentricity moves
+// the centre of mass along the body's x.
+TEST_F(Ensemble3DErrors, TheCylindersInertiasAndEccentricityAreTheFilesWhenGiven) {
+  const EnsemblePlan solid(load_ensemble(kEnsemble), InstructionSet::automatic);
+  const RealisationParameters p = solid.realisation(0).parameters;
+  const double R = 0.475, H = 2.033;
+  EXPECT_NEAR(p.inertia, p.mass * (R * R / 4.0 + H * H / 12.0), 1e-12 * p.inertia);
+  EXPECT_NEAR(p.axial_inertia, p.mass * R * R / 2.0, 1e-12 * p.axial_inertia);
+  const EnsemblePlan given(load_ensemble(variant("inertias", "rounding = \"0.5 cm\"",
+                                                 "rounding = \"0.5 cm\"\ninertia = \"5000 kg m^2\"\n"
+                                                 "axial_inertia = \"1500 kg m^2\"\neccentricity = \"2 cm\"")),
+                           InstructionSet::automatic);
+  const RealisationParameters q = given.realisation(0).parameters;
+  const double nominal_mass = 8743.0 * std::numbers::pi * R * R * H;
+  EXPECT_NEAR(q.inertia, 5000.0 * q.mass / nominal_mass, 1e-9 * q.inertia);
+  EXPECT_NEAR(q.axial_inertia, 1500.0 * q.mass / nominal_mass, 1e-9 * q.axial_inertia);
+  EXPECT_EQ(q.centre_of_mass.x, 0.02);
+  EXPECT_LT(given.stability_angle(), solid.stability_angle());
+}
 
 std::string error_of(const std::filesystem::path& file) {
   try {
