@@ -1,13 +1,9 @@
 // The 3D kernel (kernels/step3d.h, kernels/block3d.h): realisation-steps per second per
 // instruction set, the flops a 3D realisation-step costs (counted on the counting number type)
-// and the fraction of the core's peak, beside the planar kernel on the same cask and table;
-// and end to end, 1,000 realisations of the 1/3 model under 20 s of a station's three
-// components (El Centro 1940, compressed by sqrt 3) at spread intensities and incidences, in
-// blocks of 64 lanes over two threads.
+// and the fraction of the core's peak, beside the planar kernel on the same cask and table.
+// End to end through the ensemble engine: bench/bench_ensemble.cpp.
 
 #include "bench/counted.h"  // before the kernels, so their templates see its overloads
-
-#include <omp.h>
 
 #include <cmath>
 #include <filesystem>
@@ -19,8 +15,6 @@
 #include "kernels/block3d.h"
 #include "kernels/step3d.h"
 #include "model/build3d.h"
-#include "motion/component_set.h"
-#include "motion/pair_intensity.h"
 
 namespace caskdem::bench {
 namespace {
@@ -134,62 +128,6 @@ void kernel2d(benchmark::State& state, InstructionSet isa) {
   state.counters["lane_steps_per_s"] = benchmark::Counter(double(kLanes) * kSteps * state.iterations(), benchmark::Counter::kIsRate);
 }
 
-// End to end: 1,000 realisations x 20 s of El Centro's three components (the 1/3 model, time
-// compressed by sqrt 3), RotD50 PGA spread over 0.2 to 1.2 g and incidences over [0, 180), in
-// lockstep blocks of 64 lanes shared by two OpenMP threads; realisation-seconds per second.
-void ensemble3d(benchmark::State& state) {
-  const Cask3D cask = paper_cask3d();
-  const double dt = cask.model.model.time_step;
-  const std::filesystem::path dir = std::filesystem::path(CASKDEM_SHARED_DIR) / "motions" / "three-component";
-  const motion::ComponentSet set = motion::read_component_set(
-      dir / "elcentro1940_RSN6_H1_180.AT2", dir / "elcentro1940_RSN6_H2_270.AT2", dir / "elcentro1940_RSN6_UP.AT2");
-  const double rotd50 = motion::pair_intensity(set.h1, set.h2).pga_rotd50;
-  const double duration = 20.0;
-  const int steps = static_cast<int>(std::ceil(duration / dt));
-  const auto component = [&](const motion::Record& r) {
-    const auto m = motion::make_record_motion(motion::time_scaled(r, 1.0 / std::sqrt(3.0)));
-    std::vector<double> table(steps);
-    for (int n = 0; n < steps; ++n) table[n] = m->acceleration(n * dt);
-    return table;
-  };
-  const std::vector<double> h1 = component(set.h1), h2 = component(set.h2), up = component(*set.vertical);
-  constexpr int kRealisations = 1000, kBlock = 64;
-  const int blocks = (kRealisations + kBlock - 1) / kBlock;
-  std::int64_t tipped = 0;
-  for (auto _ : state) {
-    tipped = 0;
-#pragma omp parallel for schedule(dynamic, 1) num_threads(2) reduction(+ : tipped)
-    for (int b = 0; b < blocks; ++b) {
-      const int count = std::min(kBlock, kRealisations - b * kBlock);
-      LaneBlock3D block(count);
-      for (int l = 0; l < count; ++l) {
-        const int i = b * kBlock + l;
-        RealisationParameters p = cask.nominal;
-        p.horizontal_scale = p.vertical_scale = (0.2 + 1.0 * (i % 50) / 49.0) * 9.80665 / rotd50;
-        const LaneParameters<double> lane = lane_parameters3d(cask.model, p);
-        const BodyState3D<double> body = rest_state3d(cask.model, lane);
-        const ContactState3D<double> sliders[kContactSliders3D] = {};
-        block.set_lane(l, lane, body, sliders, initial_response3d(lane, body), std::numbers::pi * (i / 50) / 20.0);
-      }
-      block.pad_from(0);
-      // In chunks, as the ensemble runs blocks, so that a block whose lanes all stopped ends early.
-      for (int first = 0; first < steps; first += 2048) {
-        advance_block3d(InstructionSet::automatic, cask.model.model, cask.model.contacts, block, h1.data(), h2.data(),
-                        up.data(), 0, std::min(2048, steps - first));
-      }
-      for (int l = 0; l < count; ++l) {
-        Response3D<double> response;
-        block.get_lane(l, nullptr, nullptr, &response);
-        tipped += response.status == double(LaneStatus::tipped_over);
-      }
-    }
-  }
-  state.counters["realisations"] = kRealisations;
-  state.counters["tipped_over"] = double(tipped);
-  state.counters["realisation_seconds_per_s"] =
-      benchmark::Counter(kRealisations * duration * state.iterations(), benchmark::Counter::kIsRate);
-}
-
 }  // namespace
 
 BENCHMARK_CAPTURE(kernel3d, scalar, InstructionSet::scalar)->Unit(benchmark::kMillisecond);
@@ -198,7 +136,6 @@ BENCHMARK_CAPTURE(kernel3d, avx2, InstructionSet::avx2)->Unit(benchmark::kMillis
 BENCHMARK_CAPTURE(kernel3d, avx512f, InstructionSet::avx512f)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(kernel2d, avx2, InstructionSet::avx2)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(kernel2d, avx512f, InstructionSet::avx512f)->Unit(benchmark::kMillisecond);
-BENCHMARK(ensemble3d)->Unit(benchmark::kSecond)->Iterations(1)->UseRealTime();
 
 }  // namespace caskdem::bench
 
