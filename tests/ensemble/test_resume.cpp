@@ -1,6 +1,6 @@
 // Long runs never lose finished work: an ensemble killed (SIGKILL) in the middle leaves a
 // valid HDF5 file with the mask of completed realisations, and `--resume` finishes it into
-// the same results as an uninterrupted run.
+// the same results as an uninterrupted run; planar and 3D alike.
 
 #include <signal.h>
 #include <spawn.h>
@@ -11,6 +11,7 @@
 #include <filesystem>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include <gmock/gmock.h>
 #include <gtest/gtest.h>
@@ -37,8 +38,11 @@ std::int64_t completed_in(const std::filesystem::path& file) {
   }
 }
 
-TEST_F(Resume, KilledRunResumesToTheUninterruptedResult) {
-  const auto& directory = dir_;
+// Runs `ensemble`, kills a second run of it part-way, resumes that and compares the two files:
+// every realisation's results (and `more` datasets) and the fitted limit states.
+void killed_run_resumes(const std::string& ensemble, const std::filesystem::path& directory,
+                        const std::vector<const char*>& more) {
+  const std::string& kEnsemble = ensemble;
   const auto whole = directory / "whole.h5";
   const auto interrupted = directory / "interrupted.h5";
   ASSERT_EQ(run_caskdem("ensemble " + kEnsemble + " --out " + whole.string() + " --threads 2 --quiet --no-plot").status, 0);
@@ -66,7 +70,7 @@ TEST_F(Resume, KilledRunResumesToTheUninterruptedResult) {
 
   // The file left behind is valid and partial.
   const std::int64_t left = completed_in(interrupted);
-  RecordProperty("completed_when_killed", std::to_string(left) + " of " + std::to_string(total));
+  ::testing::Test::RecordProperty("completed_when_killed", std::to_string(left) + " of " + std::to_string(total));
   ASSERT_GT(left, 0);
   ASSERT_LT(left, total);
   EXPECT_FALSE(hdf5::open_file(interrupted).has("limit_states"));
@@ -83,6 +87,7 @@ TEST_F(Resume, KilledRunResumesToTheUninterruptedResult) {
                            "tip_over_time", "instability_time", "friction_static", "scale_factor", "level"}) {
     EXPECT_EQ(ra.read_doubles(name), rb.read_doubles(name)) << name;
   }
+  for (const char* name : more) EXPECT_EQ(ra.read_doubles(name), rb.read_doubles(name)) << name;
   for (const char* name : {"status", "impacts", "stripe", "motion"}) {
     EXPECT_EQ(ra.read_integers(name), rb.read_integers(name)) << name;
   }
@@ -99,6 +104,14 @@ TEST_F(Resume, KilledRunResumesToTheUninterruptedResult) {
       EXPECT_EQ(la.read_doubles("band_upper"), lb.read_doubles("band_upper")) << state;
     }
   }
+}
+
+TEST_F(Resume, KilledRunResumesToTheUninterruptedResult) { killed_run_resumes(kEnsemble, dir_, {}); }
+
+// The 3D cask's realisations keep their incidences and spins through a kill and a resume.
+TEST_F(Resume, Killed3DRunResumesToTheUninterruptedResult) {
+  killed_run_resumes(std::string(CASKDEM_SOURCE_DIR) + "/tests/ensemble/data/resume-3d.toml", dir_,
+                     {"incidence", "spin"});
 }
 
 TEST_F(Resume, RefusesAFileOfAnotherEnsemble) {
