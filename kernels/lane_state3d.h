@@ -29,13 +29,12 @@ struct ContactState3D {
   T shear_x, shear_z;  // N
   T stiffness;         // N/m, K_s when it last touched (0: it did not)
   T slipping;          // 1 if it slipped in the last step
-  T arc_cos, arc_sin;  // the rim's: where its touching arc was centred (body frame) when it last touched
 
   template <class F>
   void for_each_field(F&& f) {
-    f(shear_x); f(shear_z); f(stiffness); f(slipping); f(arc_cos); f(arc_sin);
+    f(shear_x); f(shear_z); f(stiffness); f(slipping);
   }
-  static constexpr int field_count = 6;
+  static constexpr int field_count = 4;
 };
 
 // What a 3D realisation has done so far.

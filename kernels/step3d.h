@@ -88,7 +88,7 @@ inline void for_each_rim_node(const Contacts3D& contacts, const LaneParameters<T
 template <FrictionLaw Law, class T, class Mask>
 inline Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p, const Mask& touching, const Mask& active,
                                 const T& normal, const T& shear_stiffness, const T& slip_x, const T& slip_z,
-                                const T& staying, ContactState3D<T>& state) {
+                                ContactState3D<T>& state) {
   using lane::broadcast;
   using lane::select;
   const T zero = broadcast<T>(0.0), one = broadcast<T>(1.0);
@@ -98,7 +98,7 @@ inline Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p, 
   const T limit = friction_coefficient<Law>(model, p, slip_speed, was_slipping) * normal;
   // Where it touched before (K_s(previous) > 0), the share of the springs still touching.
   const auto had = state.stiffness > zero;
-  const T kept = select(had, lane::min(one, shear_stiffness / select(had, state.stiffness, one)) * staying, zero);
+  const T kept = select(had, lane::min(one, shear_stiffness / select(had, state.stiffness, one)), zero);
   const T trial_x = state.shear_x * kept - shear_stiffness * slip_x * dt;
   const T trial_z = state.shear_z * kept - shear_stiffness * slip_z * dt;
   const T trial = lane::sqrt(trial_x * trial_x + trial_z * trial_z);
@@ -171,21 +171,8 @@ inline void step3d(const Model& model, const Contacts3D& contacts, const LanePar
                              select(pushing, pressure_moment.y / pushed, lowest.y - radius),
                              select(pushing, pressure_moment.z / pushed, lowest.z)};
   const Vector3<T> rim_spin = cross(omega, rim_lever);
-  // As the cask rolls the arc travels round the rim: the springs it leaves behind, the share
-  // |d theta_0| / (2 phi) of its width (none while the arc is the whole ring), take their force
-  // with them, as the springs of a narrowing arc do. |d theta_0| = 2 asin(chord / 2) and
-  // phi = 4 atan U, each to within 0.5 % (third-order series; atan x ~ x / (1 + 0.28 x^2)).
-  const T chord_c = rim.arc.towards_cos - points[0].arc_cos, chord_s = rim.arc.towards_sin - points[0].arc_sin;
-  const T chord2 = chord_c * chord_c + chord_s * chord_s;
-  const T travel = lane::sqrt(chord2) * (broadcast<T>(1.0) + chord2 * broadcast<T>(1.0 / 24.0));
-  const T U = rim.arc.half_width;
-  const T width = broadcast<T>(8.0) * U / (broadcast<T>(1.0) + broadcast<T>(0.28) * U * U);
-  const T outside = lane::max(zero, broadcast<T>(2.0 * 3.14159265358979323846) - width);
-  const T staying = lane::max(zero, broadcast<T>(1.0) - lane::min(travel, outside) / lane::max(width, broadcast<T>(1e-300)));
   const Vector3<T> rim_friction = shear_contact<Law>(model, p, rim_touching, active, rim_normal, rim_shear_stiffness,
-                                                     velocity.x + rim_spin.x, velocity.z + rim_spin.z, staying, points[0]);
-  points[0].arc_cos = select(active, rim.arc.towards_cos, points[0].arc_cos);
-  points[0].arc_sin = select(active, rim.arc.towards_sin, points[0].arc_sin);
+                                                     velocity.x + rim_spin.x, velocity.z + rim_spin.z, points[0]);
   // The normal forces' moment: sum l_j x (0, F_n,j, 0) = (sum F_n,j l_j) x e_y.
   const Vector3<T> rim_moment = cross(rim_lever, rim_friction);
   Vector3<T> force{rim_friction.x, rim_normal, rim_friction.z};
@@ -201,7 +188,7 @@ inline void step3d(const Model& model, const Contacts3D& contacts, const LanePar
     const T shear_stiffness = broadcast<T>(contacts.centre_shear_stiffness) * p.stiffness_scale;
     const T normal = normal_force(normal_stiffness, p, gap, velocity.y + spin.y);
     const Vector3<T> friction = shear_contact<Law>(model, p, gap < zero, active, normal, shear_stiffness,
-                                                   velocity.x + spin.x, velocity.z + spin.z, broadcast<T>(1.0), points[1]);
+                                                   velocity.x + spin.x, velocity.z + spin.z, points[1]);
     const Vector3<T> contact{friction.x, normal, friction.z};
     force = {force.x + contact.x, force.y + contact.y, force.z + contact.z};
     const Vector3<T> moment = cross(lever, contact);

@@ -1,6 +1,7 @@
 #pragma once
-// Running realisations: blocks of SIMD lanes (kernels/block.h), one block per OpenMP thread,
-// each lane one realisation. A lane that tips over, leaves the floor, slides off or reaches
+// Running realisations: blocks of SIMD lanes (kernels/block.h, or kernels/block3d.h for the
+// cask in 3D, each lane at its realisation's incidence), one block per OpenMP thread, each lane
+// one realisation. A lane that tips over, leaves the floor, slides off or reaches
 // the end of its run is harvested at the end of the chunk of steps it stopped in and
 // replaced by the next pending realisation, of any motion, which starts on its own clock at
 // step 0: a block's width stays busy until the work runs out, and no lane rides on stopped.

@@ -350,70 +350,70 @@ TEST(Cask3D, RollingWithoutSlipDoesNoWork) {
   const double m = c.parameters.mass, g = c.model.model.gravity, I1 = c.parameters.inertia, I3 = c.parameters.axial_inertia;
   const double a = c.spec.radius, h = c.parameters.centre_of_mass.y, alpha = c.model.model.stability_angle;
   for (const double ratio : {0.05, 0.2}) {
-  const double beta = ratio * alpha;
-  const double lean = h * std::sin(beta) - a * std::cos(beta);
-  const double rate = 0.8 * std::sqrt(m * g * lean / (std::sin(beta) * ((I3 - I1) * std::cos(beta) + I3 * lean / a)));
-  const double spin = rate * lean / a;
-  BodyState3D<double> body = tilted_state3d(c.model, c.lane, beta, 0.0);
-  const auto rotation = [](const BodyState3D<double>& b) {
-    return kernels::rotation_of(kernels::Quaternion<double>{b.qw, b.qx, b.qy, b.qz});
-  };
-  {
-    const kernels::Rotation<double> R = rotation(body);
-    const kernels::Vector3<double> body_omega = R.apply_transpose({spin * R.r01, rate + spin * R.r11, spin * R.r21});
-    body.pi_x = I1 * body_omega.x;
-    body.pi_y = I3 * body_omega.y;
-    body.pi_z = I1 * body_omega.z;
-  }
-  std::vector<ContactState3D<double>> points(kContactSliders3D, ContactState3D<double>{});
-  Response3D<double> response = initial_response3d(c.lane, body);
-  const auto stored = [&](const BodyState3D<double>& b, const std::vector<ContactState3D<double>>& s) {
-    const kernels::Rotation<double> R = rotation(b);
-    double energy = m * g * b.y;
-    const kernels::RimTouch<double> rim = kernels::rim_touch(c.model.contacts, c.lane, R, b.y);
-    const auto spring = [&](double x, double z, double kn) {
-      const kernels::Vector3<double> arm = R.apply({x - c.lane.centre_x, c.model.contacts.rounding_radius - c.lane.centre_y, z});
-      const double gap = b.y + arm.y - c.model.contacts.rounding_radius;
-      if (gap < 0.0) energy += 0.5 * kn * gap * gap;
+    const double beta = ratio * alpha;
+    const double lean = h * std::sin(beta) - a * std::cos(beta);
+    const double rate = 0.8 * std::sqrt(m * g * lean / (std::sin(beta) * ((I3 - I1) * std::cos(beta) + I3 * lean / a)));
+    const double spin = rate * lean / a;
+    BodyState3D<double> body = tilted_state3d(c.model, c.lane, beta, 0.0);
+    const auto rotation = [](const BodyState3D<double>& b) {
+      return kernels::rotation_of(kernels::Quaternion<double>{b.qw, b.qx, b.qy, b.qz});
     };
-    kernels::for_each_rim_node(c.model.contacts, c.lane, rim, [&](double x, double z, double kn, double) { spring(x, z, kn); });
-    spring(0.0, 0.0, c.model.contacts.centre_normal_stiffness);
-    for (const ContactState3D<double>& slider : s) {
-      if (slider.stiffness > 0.0) energy += 0.5 * (slider.shear_x * slider.shear_x + slider.shear_z * slider.shear_z) / slider.stiffness;
+    {
+      const kernels::Rotation<double> R = rotation(body);
+      const kernels::Vector3<double> body_omega = R.apply_transpose({spin * R.r01, rate + spin * R.r11, spin * R.r21});
+      body.pi_x = I1 * body_omega.x;
+      body.pi_y = I3 * body_omega.y;
+      body.pi_z = I1 * body_omega.z;
     }
-    return energy;
-  };
-  const double dt = c.model.model.time_step;
-  const int steps = static_cast<int>(std::round(5.0 / dt));
-  double initial = 0.0, highest = -1e300, lowest = 1e300;
-  int slipped = 0;
-  for (int n = 0; n < steps; ++n) {
-    const BodyState3D<double> before = body;
-    const std::vector<ContactState3D<double>> springs = points;
-    kernels::step3d<FrictionLaw::constant>(c.model.model, c.model.contacts, c.lane, 0.0, 0.0, 0.0, n * dt, body,
-                                           points.data(), response);
-    slipped += points[0].slipping > 0.5;
-    const kernels::Rotation<double> R = rotation(before);
-    const kernels::Vector3<double> L_before = R.apply({before.pi_x, before.pi_y, before.pi_z});
-    const kernels::Vector3<double> L_after = rotation(body).apply({body.pi_x, body.pi_y, body.pi_z});
-    const kernels::Vector3<double> pi_mid =
-        R.apply_transpose({0.5 * (L_before.x + L_after.x), 0.5 * (L_before.y + L_after.y), 0.5 * (L_before.z + L_after.z)});
-    const double vx = 0.5 * (before.vx + body.vx), vy = 0.5 * (before.vy + body.vy), vz = 0.5 * (before.vz + body.vz);
-    const double kinetic = 0.5 * m * (vx * vx + vy * vy + vz * vz) +
-                           0.5 * (pi_mid.x * pi_mid.x / I1 + pi_mid.y * pi_mid.y / I3 + pi_mid.z * pi_mid.z / I1);
-    const double energy = kinetic + stored(before, springs);
-    if (n == 0) initial = energy;
-    highest = std::max(highest, energy - initial);
-    lowest = std::min(lowest, energy - initial);
-  }
-  const double moving = 0.5 * (I1 * rate * rate);  // the order of the motion's kinetic energy
-  std::printf("beta/alpha %.2f: energy from %+.3e to %+.3e of I_1 Omega^2 / 2 over 5 s; %d steps slipped\n", ratio,
-              lowest / moving, highest / moving, slipped);
-  RecordProperty("energy_loss_" + std::to_string(ratio), std::to_string(-lowest / moving));
-  EXPECT_EQ(response.status, 0.0);
-  EXPECT_EQ(slipped, 0) << "the test is of rolling without slip";
-  EXPECT_LE(highest, 1e-9 * moving) << "beta/alpha = " << ratio;
-  EXPECT_LT(-lowest, 1e-3 * moving) << "beta/alpha = " << ratio;
+    std::vector<ContactState3D<double>> points(kContactSliders3D, ContactState3D<double>{});
+    Response3D<double> response = initial_response3d(c.lane, body);
+    const auto stored = [&](const BodyState3D<double>& b, const std::vector<ContactState3D<double>>& s) {
+      const kernels::Rotation<double> R = rotation(b);
+      double energy = m * g * b.y;
+      const kernels::RimTouch<double> rim = kernels::rim_touch(c.model.contacts, c.lane, R, b.y);
+      const auto spring = [&](double x, double z, double kn) {
+        const kernels::Vector3<double> arm = R.apply({x - c.lane.centre_x, c.model.contacts.rounding_radius - c.lane.centre_y, z});
+        const double gap = b.y + arm.y - c.model.contacts.rounding_radius;
+        if (gap < 0.0) energy += 0.5 * kn * gap * gap;
+      };
+      kernels::for_each_rim_node(c.model.contacts, c.lane, rim, [&](double x, double z, double kn, double) { spring(x, z, kn); });
+      spring(0.0, 0.0, c.model.contacts.centre_normal_stiffness);
+      for (const ContactState3D<double>& slider : s) {
+        if (slider.stiffness > 0.0) energy += 0.5 * (slider.shear_x * slider.shear_x + slider.shear_z * slider.shear_z) / slider.stiffness;
+      }
+      return energy;
+    };
+    const double dt = c.model.model.time_step;
+    const int steps = static_cast<int>(std::round(5.0 / dt));
+    double initial = 0.0, highest = -1e300, lowest = 1e300;
+    int slipped = 0;
+    for (int n = 0; n < steps; ++n) {
+      const BodyState3D<double> before = body;
+      const std::vector<ContactState3D<double>> springs = points;
+      kernels::step3d<FrictionLaw::constant>(c.model.model, c.model.contacts, c.lane, 0.0, 0.0, 0.0, n * dt, body,
+                                             points.data(), response);
+      slipped += points[0].slipping > 0.5;
+      const kernels::Rotation<double> R = rotation(before);
+      const kernels::Vector3<double> L_before = R.apply({before.pi_x, before.pi_y, before.pi_z});
+      const kernels::Vector3<double> L_after = rotation(body).apply({body.pi_x, body.pi_y, body.pi_z});
+      const kernels::Vector3<double> pi_mid =
+          R.apply_transpose({0.5 * (L_before.x + L_after.x), 0.5 * (L_before.y + L_after.y), 0.5 * (L_before.z + L_after.z)});
+      const double vx = 0.5 * (before.vx + body.vx), vy = 0.5 * (before.vy + body.vy), vz = 0.5 * (before.vz + body.vz);
+      const double kinetic = 0.5 * m * (vx * vx + vy * vy + vz * vz) +
+                             0.5 * (pi_mid.x * pi_mid.x / I1 + pi_mid.y * pi_mid.y / I3 + pi_mid.z * pi_mid.z / I1);
+      const double energy = kinetic + stored(before, springs);
+      if (n == 0) initial = energy;
+      highest = std::max(highest, energy - initial);
+      lowest = std::min(lowest, energy - initial);
+    }
+    const double moving = 0.5 * (I1 * rate * rate);  // the order of the motion's kinetic energy
+    std::printf("beta/alpha %.2f: energy from %+.3e to %+.3e of I_1 Omega^2 / 2 over 5 s; %d steps slipped\n", ratio,
+                lowest / moving, highest / moving, slipped);
+    RecordProperty("energy_loss_" + std::to_string(ratio), std::to_string(-lowest / moving));
+    EXPECT_EQ(response.status, 0.0);
+    EXPECT_EQ(slipped, 0) << "the test is of rolling without slip";
+    EXPECT_LE(highest, 1e-9 * moving) << "beta/alpha = " << ratio;
+    EXPECT_LT(-lowest, 1e-3 * moving) << "beta/alpha = " << ratio;
   }
 }
 
