@@ -7,7 +7,10 @@
 //    equation; Housner 1963), within 1 % for theta0/alpha = 0.3 .. 0.9 in the stiff limit;
 //  - the onset of rocking: held at 1 % below g tan(alpha) it stands, 1 % above it tips over, in
 //    the stiff limit; and it starts at the same acceleration within 1 % whichever way the
-//    table pushes (0, 2.8, 30, 45, 77, 90 degrees);
+//    table pushes (0, 2.8, 30, 45, 77, 90 degrees); with its centre of mass off the axis, at
+//    the rigid body's g l / h_c towards, away from and across the eccentricity;
+//  - steady rolling on the rim at the precession rate derived from Euler's equations, and
+//    rolling without slip that does no work (its energy never rises);
 //  - torque-free rotation (off the floor): the angular momentum in the floor frame is conserved
 //    to round-off and the axis precesses about it at |L| / I_1, the symmetric top's rate
 //    (Landau & Lifshitz, Mechanics, section 33);
