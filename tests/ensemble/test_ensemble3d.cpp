@@ -174,14 +174,10 @@ TEST_F(Ensemble3DErrors, TheCylindersInertiasAndEccentricityAreTheFilesWhenGiven
   EXPECT_LT(given.stability_angle(), solid.stability_angle());
 }
 
+// The InputError that reading and planning the ensemble file throws.
 std::string error_of(const std::filesystem::path& file) {
-  try {
-    const EnsembleSpec spec = load_ensemble(file);
-    const EnsemblePlan plan(spec, InstructionSet::automatic);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "no error";
+  return testing::input_error_of([&] { const EnsemblePlan plan(load_ensemble(file), InstructionSet::automatic); },
+                                 file.string());
 }
 
 TEST_F(Ensemble3DErrors, EachRefusalNamesItsKey) {

@@ -283,6 +283,16 @@ TEST(Cask3D, OffTheFloorItConservesAngularMomentumAndPrecessesAsASymmetricTop) {
   EXPECT_NEAR(turned, expected, 1e-6 * rate * steps * dt);
 }
 
+// Sets the body's angular momentum for omega = rate e_y + spin e (precession about the vertical
+// and spin about the axis e), in body coordinates.
+void set_rolling_rates(BodyState3D<double>& body, double I1, double I3, double rate, double spin) {
+  const kernels::Rotation<double> R = kernels::rotation_of(kernels::Quaternion<double>{body.qw, body.qx, body.qy, body.qz});
+  const kernels::Vector3<double> body_omega = R.apply_transpose({spin * R.r01, rate + spin * R.r11, spin * R.r21});
+  body.pi_x = I1 * body_omega.x;
+  body.pi_y = I3 * body_omega.y;
+  body.pi_z = I1 * body_omega.z;
+}
+
 // Steady rolling on the rim, the generalisation of Euler's disk (docs/cask3d.md, "Rolling on
 // the rim", derived from Euler's equations; checked there by an independent integration,
 // bench/rolling_reference.py): a cylinder of rim radius a, centre of mass h above its base,
@@ -310,13 +320,7 @@ TEST(Cask3D, RollsOnItsRimAtTheSteadyPrecessionRate) {
     const double per_radian = c.model.contacts.ring_normal_stiffness / (2.0 * std::numbers::pi);
     const double depth = std::cbrt(std::pow(m * g / (per_radian * 4.0 / 3.0), 2) * a * std::sin(beta) / 2.0);
     body.y -= depth;
-    // omega = Omega e_y + w_s e; the angular momentum in body coordinates, I omega_body.
-    const kernels::Rotation<double> R = kernels::rotation_of(kernels::Quaternion<double>{body.qw, body.qx, body.qy, body.qz});
-    const kernels::Vector3<double> omega{spin * R.r01, rate + spin * R.r11, spin * R.r21};
-    const kernels::Vector3<double> body_omega = R.apply_transpose(omega);
-    body.pi_x = I1 * body_omega.x;
-    body.pi_y = I3 * body_omega.y;
-    body.pi_z = I1 * body_omega.z;
+    set_rolling_rates(body, I1, I3, rate, spin);  // omega = Omega e_y + w_s e
     const double turns = 10.0, duration = turns * 2.0 * std::numbers::pi / rate;
     const RunResult3D run = simulate3d(c.model, c.lane, body, {&still}, {duration, 1e-3});
     const TimeHistory3D& history = run.history;
@@ -343,6 +347,39 @@ TEST(Cask3D, RollsOnItsRimAtTheSteadyPrecessionRate) {
   }
 }
 
+// The cask's energy at t_n, from its state before the step from t_n and after it: kinetic
+// (from the means of the half-step velocities and angular momenta), potential, and the contact
+// springs' (the rim's nodes integrate its elastic energy as they integrate its force; the
+// centre point; the spring-sliders' shear energy |F_s|^2 / (2 K_s)).
+double energy_at(const Cask& c, const BodyState3D<double>& before, const std::vector<ContactState3D<double>>& springs,
+                 const BodyState3D<double>& after) {
+  const double m = c.parameters.mass, g = c.model.model.gravity;
+  const double I1 = c.parameters.inertia, I3 = c.parameters.axial_inertia;
+  const auto rotation = [](const BodyState3D<double>& b) {
+    return kernels::rotation_of(kernels::Quaternion<double>{b.qw, b.qx, b.qy, b.qz});
+  };
+  const kernels::Rotation<double> R = rotation(before);
+  double energy = m * g * before.y;
+  const kernels::RimTouch<double> rim = kernels::rim_touch(c.model.contacts, c.lane, R, before.y);
+  const auto spring = [&](double x, double z, double kn) {
+    const kernels::Vector3<double> arm = R.apply({x - c.lane.centre_x, c.model.contacts.rounding_radius - c.lane.centre_y, z});
+    const double gap = before.y + arm.y - c.model.contacts.rounding_radius;
+    if (gap < 0.0) energy += 0.5 * kn * gap * gap;
+  };
+  kernels::for_each_rim_node(c.model.contacts, c.lane, rim, [&](double x, double z, double kn, double) { spring(x, z, kn); });
+  spring(0.0, 0.0, c.model.contacts.centre_normal_stiffness);
+  for (const ContactState3D<double>& slider : springs) {
+    if (slider.stiffness > 0.0) energy += 0.5 * (slider.shear_x * slider.shear_x + slider.shear_z * slider.shear_z) / slider.stiffness;
+  }
+  const kernels::Vector3<double> L_before = R.apply({before.pi_x, before.pi_y, before.pi_z});
+  const kernels::Vector3<double> L_after = rotation(after).apply({after.pi_x, after.pi_y, after.pi_z});
+  const kernels::Vector3<double> pi_mid =
+      R.apply_transpose({0.5 * (L_before.x + L_after.x), 0.5 * (L_before.y + L_after.y), 0.5 * (L_before.z + L_after.z)});
+  const double vx = 0.5 * (before.vx + after.vx), vy = 0.5 * (before.vy + after.vy), vz = 0.5 * (before.vz + after.vz);
+  return energy + 0.5 * m * (vx * vx + vy * vy + vz * vz) +
+         0.5 * (pi_mid.x * pi_mid.x / I1 + pi_mid.y * pi_mid.y / I3 + pi_mid.z * pi_mid.z / I1);
+}
+
 // Rolling without slip does no work. Released at a small tilt with 80 % of the steady rolling's
 // rates (so that it wobbles: its tilt and the touching arc's travel round the rim swing), on
 // friction that holds (mu = 2) and with no damping, the cask's energy (kinetic, potential, and
@@ -358,34 +395,9 @@ TEST(Cask3D, RollingWithoutSlipDoesNoWork) {
     const double rate = 0.8 * std::sqrt(m * g * lean / (std::sin(beta) * ((I3 - I1) * std::cos(beta) + I3 * lean / a)));
     const double spin = rate * lean / a;
     BodyState3D<double> body = tilted_state3d(c.model, c.lane, beta, 0.0);
-    const auto rotation = [](const BodyState3D<double>& b) {
-      return kernels::rotation_of(kernels::Quaternion<double>{b.qw, b.qx, b.qy, b.qz});
-    };
-    {
-      const kernels::Rotation<double> R = rotation(body);
-      const kernels::Vector3<double> body_omega = R.apply_transpose({spin * R.r01, rate + spin * R.r11, spin * R.r21});
-      body.pi_x = I1 * body_omega.x;
-      body.pi_y = I3 * body_omega.y;
-      body.pi_z = I1 * body_omega.z;
-    }
+    set_rolling_rates(body, I1, I3, rate, spin);
     std::vector<ContactState3D<double>> points(kContactSliders3D, ContactState3D<double>{});
     Response3D<double> response = initial_response3d(c.lane, body);
-    const auto stored = [&](const BodyState3D<double>& b, const std::vector<ContactState3D<double>>& s) {
-      const kernels::Rotation<double> R = rotation(b);
-      double energy = m * g * b.y;
-      const kernels::RimTouch<double> rim = kernels::rim_touch(c.model.contacts, c.lane, R, b.y);
-      const auto spring = [&](double x, double z, double kn) {
-        const kernels::Vector3<double> arm = R.apply({x - c.lane.centre_x, c.model.contacts.rounding_radius - c.lane.centre_y, z});
-        const double gap = b.y + arm.y - c.model.contacts.rounding_radius;
-        if (gap < 0.0) energy += 0.5 * kn * gap * gap;
-      };
-      kernels::for_each_rim_node(c.model.contacts, c.lane, rim, [&](double x, double z, double kn, double) { spring(x, z, kn); });
-      spring(0.0, 0.0, c.model.contacts.centre_normal_stiffness);
-      for (const ContactState3D<double>& slider : s) {
-        if (slider.stiffness > 0.0) energy += 0.5 * (slider.shear_x * slider.shear_x + slider.shear_z * slider.shear_z) / slider.stiffness;
-      }
-      return energy;
-    };
     const double dt = c.model.model.time_step;
     const int steps = static_cast<int>(std::round(5.0 / dt));
     double initial = 0.0, highest = -1e300, lowest = 1e300;
@@ -396,15 +408,7 @@ TEST(Cask3D, RollingWithoutSlipDoesNoWork) {
       kernels::step3d<FrictionLaw::constant>(c.model.model, c.model.contacts, c.lane, 0.0, 0.0, 0.0, n * dt, body,
                                              points.data(), response);
       slipped += points[0].slipping > 0.5;
-      const kernels::Rotation<double> R = rotation(before);
-      const kernels::Vector3<double> L_before = R.apply({before.pi_x, before.pi_y, before.pi_z});
-      const kernels::Vector3<double> L_after = rotation(body).apply({body.pi_x, body.pi_y, body.pi_z});
-      const kernels::Vector3<double> pi_mid =
-          R.apply_transpose({0.5 * (L_before.x + L_after.x), 0.5 * (L_before.y + L_after.y), 0.5 * (L_before.z + L_after.z)});
-      const double vx = 0.5 * (before.vx + body.vx), vy = 0.5 * (before.vy + body.vy), vz = 0.5 * (before.vz + body.vz);
-      const double kinetic = 0.5 * m * (vx * vx + vy * vy + vz * vz) +
-                             0.5 * (pi_mid.x * pi_mid.x / I1 + pi_mid.y * pi_mid.y / I3 + pi_mid.z * pi_mid.z / I1);
-      const double energy = kinetic + stored(before, springs);
+      const double energy = energy_at(c, before, springs, body);
       if (n == 0) initial = energy;
       highest = std::max(highest, energy - initial);
       lowest = std::min(lowest, energy - initial);
@@ -427,28 +431,6 @@ TEST(Cask3D, WithoutDampingOrFrictionItKeepsItsEnergy) {
   std::vector<ContactState3D<double>> points(kContactSliders3D, ContactState3D<double>{});
   Response3D<double> response = initial_response3d(c.lane, body);
   const double m = c.parameters.mass, g = c.model.model.gravity;
-  const double I1 = c.parameters.inertia, I3 = c.parameters.axial_inertia;
-  const auto rotation = [](const BodyState3D<double>& b) {
-    return kernels::rotation_of(kernels::Quaternion<double>{b.qw, b.qx, b.qy, b.qz});
-  };
-  // Potential and spring energy at t_n, from the positions (and the springs' shear forces).
-  const auto stored = [&](const BodyState3D<double>& b, const std::vector<ContactState3D<double>>& s) {
-    const kernels::Rotation<double> R = rotation(b);
-    double energy = m * g * b.y;
-    const kernels::RimTouch<double> rim = kernels::rim_touch(c.model.contacts, c.lane, R, b.y);
-    // The rim's nodes integrate its elastic energy as they integrate its force; the centre point.
-    const auto spring = [&](double x, double z, double kn) {
-      const kernels::Vector3<double> arm = R.apply({x - c.lane.centre_x, c.model.contacts.rounding_radius - c.lane.centre_y, z});
-      const double gap = b.y + arm.y - c.model.contacts.rounding_radius;
-      if (gap < 0.0) energy += 0.5 * kn * gap * gap;
-    };
-    kernels::for_each_rim_node(c.model.contacts, c.lane, rim, [&](double x, double z, double kn, double) { spring(x, z, kn); });
-    spring(0.0, 0.0, c.model.contacts.centre_normal_stiffness);
-    // Frictionless: no shear spring holds energy.
-    EXPECT_EQ(s[0].shear_x, 0.0);
-    EXPECT_EQ(s[1].shear_x, 0.0);
-    return energy;
-  };
   const double dt = c.model.model.time_step;
   const int steps = static_cast<int>(std::round(10.0 / dt));
   double initial = 0.0, worst = 0.0;
@@ -457,19 +439,12 @@ TEST(Cask3D, WithoutDampingOrFrictionItKeepsItsEnergy) {
     const std::vector<ContactState3D<double>> springs = points;
     kernels::step3d<FrictionLaw::constant>(c.model.model, c.model.contacts, c.lane, 0.0, 0.0, 0.0, n * dt, body,
                                            points.data(), response);
-    // Kinetic energy at t_n from the means of the half-step velocities and angular momenta.
-    const kernels::Rotation<double> R = rotation(before);
-    const kernels::Vector3<double> L_before = R.apply({before.pi_x, before.pi_y, before.pi_z});
-    const kernels::Vector3<double> L_after = rotation(body).apply({body.pi_x, body.pi_y, body.pi_z});
-    const kernels::Vector3<double> pi_mid =
-        R.apply_transpose({0.5 * (L_before.x + L_after.x), 0.5 * (L_before.y + L_after.y), 0.5 * (L_before.z + L_after.z)});
-    const double vx = 0.5 * (before.vx + body.vx), vy = 0.5 * (before.vy + body.vy), vz = 0.5 * (before.vz + body.vz);
-    const double kinetic = 0.5 * m * (vx * vx + vy * vy + vz * vz) +
-                           0.5 * (pi_mid.x * pi_mid.x / I1 + pi_mid.y * pi_mid.y / I3 + pi_mid.z * pi_mid.z / I1);
-    const double energy = kinetic + stored(before, springs);
+    // Frictionless: no shear spring holds energy.
+    EXPECT_EQ(springs[0].shear_x, 0.0);
+    EXPECT_EQ(springs[1].shear_x, 0.0);
+    const double energy = energy_at(c, before, springs, body);
     if (n == 0) initial = energy;
     worst = std::max(worst, std::abs(energy - initial));
-
   }
   // Against the energy that moves: the rocking's, the fall of the centre of mass from release to
   // upright, m g R_p (cos(alpha - theta0) - cos(alpha)).
