@@ -129,7 +129,7 @@ std::vector<double> parse_list(const std::string& text) {
 int step_study(const Case& c, const std::vector<Station>& sets, const std::vector<double>& levels,
                const std::vector<double>& safety_factors) {
   const Cylinder& cylinder = c.cask.cylinder;
-  const CaskSpec3D cask{0.5 * cylinder.diameter, cylinder.height, c.model.section.rounding, c.parameters.mass};
+  const CaskSpec3D cask = cask_spec3d(cylinder, c.model.section.rounding, c.parameters.mass);
   const RealisationParameters parameters = nominal_parameters3d(cask, c.parameters);
   const double similarity = c.horizontal.similarity_scale;
   const int count = static_cast<int>(sets.size() * levels.size());
@@ -204,7 +204,7 @@ int run(int argc, char** argv) {
 
   // The models: 3D from the case, two planar readings of the same cylinder.
   const Cylinder& cylinder = c.cask.cylinder;
-  const CaskSpec3D cask{0.5 * cylinder.diameter, cylinder.height, c.model.section.rounding, c.parameters.mass};
+  const CaskSpec3D cask = cask_spec3d(cylinder, c.model.section.rounding, c.parameters.mass);
   const RealisationParameters parameters3d = nominal_parameters3d(cask, c.parameters);
   const Model3D model3d = build_model3d(c.model, cask, parameters3d);
   const LaneParameters<double> lane3d = lane_parameters3d(model3d, parameters3d);

@@ -128,8 +128,6 @@ EnsemblePlan::EnsemblePlan(const EnsembleSpec& spec, InstructionSet isa)
       const Cylinder& cylinder = spec_.base.cask.cylinder;
       const CaskSpec3D cask = cask_spec3d(cylinder, model_spec_.section.rounding, nominal_.mass);
       nominal_ = nominal_parameters3d(cask, spec_.base.parameters);
-      if (cylinder.inertia) nominal_.inertia = *cylinder.inertia;
-      if (cylinder.axial_inertia) nominal_.axial_inertia = *cylinder.axial_inertia;
       const Model3D provisional = build_model3d(model_spec_, cask, nominal_);
       model_spec_.time_step = model_spec_.safety_factor * 2.0 * std::sqrt(lightest / standing_stiffness(provisional.contacts));
       model3d_ = build_model3d(model_spec_, cask, nominal_);

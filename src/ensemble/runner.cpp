@@ -51,7 +51,6 @@ class Holdings {
 // A planar block's lanes and the realisations they hold.
 class Lanes2D : public Holdings {
  public:
-  using Block = LaneBlock;
   Lanes2D(const EnsemblePlan& plan, int width)
       : Holdings(width), plan_(plan), block_(width, plan.model().corner_count), parameters_(width) {}
 
@@ -114,7 +113,6 @@ class Lanes2D : public Holdings {
 // A 3D block's lanes (kernels/block3d.h), each at its realisation's incidence.
 class Lanes3D : public Holdings {
  public:
-  using Block = LaneBlock3D;
   Lanes3D(const EnsemblePlan& plan, int width) : Holdings(width), plan_(plan), block_(width), parameters_(width) {}
 
   LaneBlock3D& block() { return block_; }

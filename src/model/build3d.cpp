@@ -51,14 +51,15 @@ double damping_beta3d(const Model3D& m, const RealisationParameters& p) {
 }  // namespace
 
 CaskSpec3D cask_spec3d(const Cylinder& cylinder, double rounding, double mass) {
-  return {0.5 * cylinder.diameter, cylinder.height, rounding, mass, cylinder.eccentricity};
+  return {0.5 * cylinder.diameter, cylinder.height, rounding, mass, cylinder.eccentricity, cylinder.inertia,
+          cylinder.axial_inertia};
 }
 
 RealisationParameters nominal_parameters3d(const CaskSpec3D& cask, const RealisationParameters& base) {
   RealisationParameters p = base;
   p.mass = cask.mass;
-  p.inertia = cask.mass * (cask.radius * cask.radius / 4.0 + cask.height * cask.height / 12.0);
-  p.axial_inertia = cask.mass * cask.radius * cask.radius / 2.0;
+  p.inertia = cask.inertia.value_or(cask.mass * (cask.radius * cask.radius / 4.0 + cask.height * cask.height / 12.0));
+  p.axial_inertia = cask.axial_inertia.value_or(cask.mass * cask.radius * cask.radius / 2.0);
   p.centre_of_mass = {cask.eccentricity, 0.5 * cask.height};
   return p;
 }

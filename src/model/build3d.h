@@ -10,6 +10,8 @@
 // refused beyond the explicit scheme's bound (2 / w_max)(sqrt(1 + z^2) - z), w_max^2 bounded by
 // the trace of M^-1 K of the six rigid-body modes on the contact springs.
 
+#include <optional>
+
 #include "kernels/lane_state.h"
 #include "kernels/lane_state3d.h"
 #include "kernels/model.h"
@@ -24,6 +26,8 @@ struct CaskSpec3D {
   double rounding = 0.0;  // r of the base rim, m
   double mass = 0.0;      // kg
   double eccentricity = 0.0;  // m, the centre of mass off the axis (along body x), as in 2D
+  // kg m^2, I_1 and I_3 when given (else the solid cylinder's)
+  std::optional<double> inertia = std::nullopt, axial_inertia = std::nullopt;
 };
 
 // The 3D cask of a case's cylinder ([cask] dimensions = 3).
@@ -34,8 +38,8 @@ struct Model3D {
   Contacts3D contacts;
 };
 
-// The solid cylinder's mass, I_1, I_3 and centre of mass (at H / 2, off the axis by the
-// eccentricity: eccentric contents, the cylinder's moments of inertia kept about it).
+// The cask's mass, I_1, I_3 (the solid cylinder's unless given) and centre of mass (at H / 2,
+// off the axis by the eccentricity: eccentric contents, the moments of inertia kept about it).
 RealisationParameters nominal_parameters3d(const CaskSpec3D& cask, const RealisationParameters& base);
 
 // Friction, damping and integration from `spec` (its section unused; its contact stiffness is

@@ -83,8 +83,6 @@ RunReport3D run_case3d(const Case& c, double output_interval) {
   const Cylinder& cylinder = c.cask.cylinder;
   report.cask = cask_spec3d(cylinder, c.model.section.rounding, c.parameters.mass);
   report.parameters = nominal_parameters3d(report.cask, c.parameters);
-  if (cylinder.inertia) report.parameters.inertia = *cylinder.inertia;
-  if (cylinder.axial_inertia) report.parameters.axial_inertia = *cylinder.axial_inertia;
   LaneParameters<double> lane;
   try {
     report.model = build_model3d(c.model, report.cask, report.parameters);
