@@ -77,14 +77,16 @@ inline CornerContact<T> corner_contact(const Model& model, const LaneParameters<
   const T normal = normal_force(normal_stiffness, lane_parameters, gap, normal_velocity);
 
   const auto was_slipping = previous.slipping > broadcast<T>(0.5);
-  const T mu = friction_coefficient<Law>(model, lane_parameters, lane::abs(slip_velocity), was_slipping);
-  const T limit = mu * normal;
   const T trial = previous.shear_spring - shear_stiffness * slip_velocity * broadcast<T>(model.time_step);
+  const T sticking_dashpot = -beta * shear_stiffness * slip_velocity;
+  const T sticking = trial + sticking_dashpot;
+  const T limit = friction_limit<Law>(model, lane_parameters, lane::abs(slip_velocity), was_slipping, normal,
+                                      [&](const T& floor) { return lane::abs(trial) <= floor && lane::abs(sticking) <= floor; });
   const auto slipping = touching && (lane::abs(trial) > limit);
   // Both branches computed, blended per lane: slip caps the spring at mu F_n, stick keeps
   // the trial force, an open contact resets it.
   const T spring = select(slipping, lane::copysign(limit, trial), select(touching, trial, zero));
-  const T dashpot = select(touching && !slipping, -beta * shear_stiffness * slip_velocity, zero);
+  const T dashpot = select(touching && !slipping, sticking_dashpot, zero);
   const T shear_force = lane::clamp(spring + dashpot, -limit, limit);
 
   return {normal, shear_force, {spring, lane::as_number<T>(slipping)}};

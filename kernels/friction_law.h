@@ -15,6 +15,8 @@
 //
 // v is the slip velocity of the contact point relative to the floor.
 
+#include <algorithm>
+
 #include "kernels/lane.h"
 #include "kernels/lane_state.h"
 #include "kernels/model.h"
@@ -52,6 +54,38 @@ inline T friction_coefficient(const Model& model, const LaneParameters<T>& lane_
   } else {
     return tabulated_friction(model, slip_speed);
   }
+}
+
+// A floor under the coefficient: mu(v) >= lowest_friction for every slip speed, with a margin
+// of 1e-12 for the rounding of the law's own arithmetic.
+template <FrictionLaw Law, class T>
+inline T lowest_friction(const Model& model, const LaneParameters<T>& lane_parameters) {
+  constexpr double margin = 1.0 - 1e-12;
+  if constexpr (Law == FrictionLaw::tabulated) {
+    double lowest = model.friction_table_coefficient[0];
+    for (int row = 1; row < model.friction_table_size; ++row) lowest = std::min(lowest, model.friction_table_coefficient[row]);
+    return lane::broadcast<T>(lowest * margin);
+  } else {
+    return lane::min(lane_parameters.friction_static, lane_parameters.friction_kinetic) * lane::broadcast<T>(margin);
+  }
+}
+
+// The limit mu F_n of a contact's shear force. mu matters only through this limit: with F_n = 0
+// (an open contact) it is 0 whatever mu is, and a contact whose forces all stay within
+// lowest_friction x F_n sticks unclipped whatever mu(v) is; for it the floor serves as the limit
+// and gives the same forces to the bit. holds_within(floor) says, per lane, whether the
+// contact's trial spring force and its sticking force (spring and dashpot) are within the
+// floor. The laws that cost an exp or a table search are evaluated only when some lane of the
+// batch may slip or be clipped: the same bits, less work while the cask stands or rocks on a
+// pivot that holds.
+template <FrictionLaw Law, class T, class HoldsWithin>
+inline T friction_limit(const Model& model, const LaneParameters<T>& lane_parameters, const T& slip_speed,
+                        const lane::Mask<T>& was_slipping, const T& normal_force, HoldsWithin&& holds_within) {
+  if constexpr (Law == FrictionLaw::exponential || Law == FrictionLaw::tabulated) {
+    const T floor = lowest_friction<Law>(model, lane_parameters) * normal_force;
+    if (lane::all(holds_within(floor) || (normal_force == lane::broadcast<T>(0.0)))) return floor;
+  }
+  return friction_coefficient<Law>(model, lane_parameters, slip_speed, was_slipping) * normal_force;
 }
 
 }  // namespace caskdem::kernels

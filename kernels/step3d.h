@@ -95,13 +95,23 @@ inline Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p, 
   const T dt = broadcast<T>(model.time_step);
   const T slip_speed = lane::sqrt(slip_x * slip_x + slip_z * slip_z);
   const auto was_slipping = state.slipping > broadcast<T>(0.5);
-  const T limit = friction_coefficient<Law>(model, p, slip_speed, was_slipping) * normal;
   // Where it touched before (K_s(previous) > 0), the share of the springs still touching.
   const auto had = state.stiffness > zero;
   const T kept = select(had, lane::min(one, shear_stiffness / select(had, state.stiffness, one)), zero);
   const T trial_x = state.shear_x * kept - shear_stiffness * slip_x * dt;
   const T trial_z = state.shear_z * kept - shear_stiffness * slip_z * dt;
-  const T trial = lane::sqrt(trial_x * trial_x + trial_z * trial_z);
+  const T trial_squared = trial_x * trial_x + trial_z * trial_z;
+  const T trial = lane::sqrt(trial_squared);
+  const T dashpot_x = -p.damping_beta * shear_stiffness * slip_x;
+  const T dashpot_z = -p.damping_beta * shear_stiffness * slip_z;
+  const T sticking_x = trial_x + dashpot_x, sticking_z = trial_z + dashpot_z;
+  // Squares against a square a little inside the floor's, so that the magnitudes taken below
+  // (square roots of these same sums) are within the floor whatever their rounding.
+  const T limit = friction_limit<Law>(model, p, slip_speed, was_slipping, normal, [&](const T& floor) {
+    const T inside = floor * broadcast<T>(1.0 - 1e-12);
+    const T floor_squared = inside * inside;
+    return trial_squared <= floor_squared && sticking_x * sticking_x + sticking_z * sticking_z <= floor_squared;
+  });
   const auto slipping = touching && (trial > limit);
   // Both branches computed, blended per lane: slip caps the spring at mu F_n along its own
   // direction (trial > limit >= 0, so the division is safe where it is used), stick keeps
@@ -110,8 +120,8 @@ inline Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p, 
   const T spring_x = select(touching, trial_x * cap, zero);
   const T spring_z = select(touching, trial_z * cap, zero);
   const auto sticking = touching && !slipping;
-  const T shear_x = spring_x + select(sticking, -p.damping_beta * shear_stiffness * slip_x, zero);
-  const T shear_z = spring_z + select(sticking, -p.damping_beta * shear_stiffness * slip_z, zero);
+  const T shear_x = spring_x + select(sticking, dashpot_x, zero);
+  const T shear_z = spring_z + select(sticking, dashpot_z, zero);
   const T magnitude = lane::sqrt(shear_x * shear_x + shear_z * shear_z);
   const auto over = magnitude > limit;
   const T clip = select(over, limit / select(over, magnitude, one), one);

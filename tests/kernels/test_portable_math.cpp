@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <cstring>
 #include <random>
+#include <vector>
 
 #include <gtest/gtest.h>
 #include <xsimd/xsimd.hpp>
@@ -73,6 +74,25 @@ void expect_same_bits_as_scalar() {
 }
 
 TEST(PortableMath, Sse2BatchGivesScalarBits) { expect_same_bits_as_scalar<xsimd::sse2>(); }
+
+// sin_cos skips the argument reduction when every lane is within 0.75 rad (a rocking cask's
+// range). One lane alone takes that branch; beside a lane at 3 rad it takes the reduction.
+TEST(PortableMath, SinCosWithoutReductionGivesTheReductionsBits) {
+  using Batch = xsimd::batch<double, xsimd::sse2>;
+  std::vector<double> angles = {0.0, -0.0, 1e-300, -1e-300, 0.7499999999999999, -0.7499999999999999};
+  for (int i = -100000; i <= 100000; ++i) angles.push_back(0.75 * i / 100000.0 * (1.0 - 1e-16));
+  alignas(16) double input[2], wide_sin[2], wide_cos[2];
+  for (double a : angles) {
+    input[0] = a;
+    input[1] = 3.0;
+    const SinCos<Batch> reduced = sin_cos(Batch::load_aligned(input));
+    reduced.sin.store_aligned(wide_sin);
+    reduced.cos.store_aligned(wide_cos);
+    const SinCos<double> direct = sin_cos(a);
+    ASSERT_EQ(std::memcmp(&direct.sin, &wide_sin[0], sizeof(double)), 0) << a;
+    ASSERT_EQ(std::memcmp(&direct.cos, &wide_cos[0], sizeof(double)), 0) << a;
+  }
+}
 
 }  // namespace
 }  // namespace caskdem::kernels
