@@ -80,8 +80,10 @@ inline CornerContact<T> corner_contact(const Model& model, const LaneParameters<
   const T trial = previous.shear_spring - shear_stiffness * slip_velocity * broadcast<T>(model.time_step);
   const T sticking_dashpot = -beta * shear_stiffness * slip_velocity;
   const T sticking = trial + sticking_dashpot;
-  const T limit = friction_limit<Law>(model, lane_parameters, lane::abs(slip_velocity), was_slipping, normal,
-                                      [&](const T& floor) { return lane::abs(trial) <= floor && lane::abs(sticking) <= floor; });
+  const T limit =
+      friction_limit<Law>(model, lane_parameters, lane::abs(slip_velocity), was_slipping, normal, [&](const T& floor) {
+        return lane::abs(trial) <= floor && lane::abs(sticking) <= floor;
+      });
   const auto slipping = touching && (lane::abs(trial) > limit);
   // Both branches computed, blended per lane: slip caps the spring at mu F_n, stick keeps
   // the trial force, an open contact resets it.

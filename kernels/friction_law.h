@@ -63,7 +63,9 @@ inline T lowest_friction(const Model& model, const LaneParameters<T>& lane_param
   constexpr double margin = 1.0 - 1e-12;
   if constexpr (Law == FrictionLaw::tabulated) {
     double lowest = model.friction_table_coefficient[0];
-    for (int row = 1; row < model.friction_table_size; ++row) lowest = std::min(lowest, model.friction_table_coefficient[row]);
+    for (int row = 1; row < model.friction_table_size; ++row) {
+      lowest = std::min(lowest, model.friction_table_coefficient[row]);
+    }
     return lane::broadcast<T>(lowest * margin);
   } else {
     return lane::min(lane_parameters.friction_static, lane_parameters.friction_kinetic) * lane::broadcast<T>(margin);

@@ -180,7 +180,8 @@ bool holds_at_floor(const Model& m, const Situation& s) {
   const double normal = normal_force(m.corner_normal_stiffness[0], s.p, s.gap, s.normal_velocity);
   const double floor = lowest_friction<Law>(m, s.p) * normal;
   const double trial = s.shear_spring - ks * s.slip_velocity * m.time_step;
-  return normal == 0.0 || (std::abs(trial) <= floor && std::abs(trial - s.p.damping_beta * ks * s.slip_velocity) <= floor);
+  const double sticking = trial + -s.p.damping_beta * ks * s.slip_velocity;
+  return normal == 0.0 || (std::abs(trial) <= floor && std::abs(sticking) <= floor);
 }
 
 template <FrictionLaw Law>
