@@ -69,8 +69,10 @@ struct SinCos {
   T cos;
 };
 
+// Always inlined: as a call it would make every live SIMD register of the step a spill (none
+// survives a call in the x86-64 ABI); with its fast branch the compiler stopped inlining it.
 template <class T>
-inline SinCos<T> sin_cos(T a) {
+[[gnu::always_inline]] inline SinCos<T> sin_cos(T a) {
   using lane::broadcast;
   using lane::select;
   static constexpr std::array<double, 8> sine_tail = {
