@@ -56,36 +56,47 @@ inline T friction_coefficient(const Model& model, const LaneParameters<T>& lane_
   }
 }
 
-// A floor under the coefficient: mu(v) >= lowest_friction for every slip speed, with a margin
-// of 1e-12 for the rounding of the law's own arithmetic.
+// A floor under the coefficient: mu(v) >= lowest_friction for every slip speed as the law
+// computes it, rounding included. The exact law never goes below the lower of mu_s and mu_k (or
+// the table's lowest row); its arithmetic can. A falling law's mu_k + (mu_s - mu_k) e, with
+// 0 <= e <= 1 (exp_negative), is at least mu_k exactly; a rising law's, and a table's
+// interpolation mu0 + slope (v - v0), are computed with a few roundings of numbers as large as
+// the highest coefficient, so each can fall a few ulp of that below the lowest one (mu_s = 1e-6
+// against mu_k = 0.5 gives 1e-6 - 2.7e-17). The floor keeps 1e-12 of the highest coefficient
+// clear of them, and is never negative.
 template <FrictionLaw Law, class T>
 inline T lowest_friction(const Model& model, const LaneParameters<T>& lane_parameters) {
-  constexpr double margin = 1.0 - 1e-12;
+  constexpr double clearance = 1e-12;
   if constexpr (Law == FrictionLaw::tabulated) {
-    double lowest = model.friction_table_coefficient[0];
+    double lowest = model.friction_table_coefficient[0], highest = lowest;
     for (int row = 1; row < model.friction_table_size; ++row) {
       lowest = std::min(lowest, model.friction_table_coefficient[row]);
+      highest = std::max(highest, model.friction_table_coefficient[row]);
     }
-    return lane::broadcast<T>(lowest * margin);
+    return lane::broadcast<T>(std::max(0.0, lowest - clearance * highest));
   } else {
-    return lane::min(lane_parameters.friction_static, lane_parameters.friction_kinetic) * lane::broadcast<T>(margin);
+    const T lowest = lane::min(lane_parameters.friction_static, lane_parameters.friction_kinetic);
+    const T highest = lane::max(lane_parameters.friction_static, lane_parameters.friction_kinetic);
+    return lane::max(lowest - lane::broadcast<T>(clearance) * highest, lane::broadcast<T>(0.0));
   }
 }
 
 // The limit mu F_n of a contact's shear force. mu matters only through this limit: with F_n = 0
-// (an open contact) it is 0 whatever mu is, and a contact whose forces all stay within
-// lowest_friction x F_n sticks unclipped whatever mu(v) is; for it the floor serves as the limit
-// and gives the same forces to the bit. holds_within(floor) says, per lane, whether the
-// contact's trial spring force and its sticking force (spring and dashpot) are within the
-// floor. The laws that cost an exp or a table search are evaluated only when some lane of the
-// batch may slip or be clipped: the same bits, less work while the cask stands or rocks on a
-// pivot that holds.
+// (an open contact) it is 0 whatever mu is, and a contact whose forces all stay within a floor
+// lowest_friction x F_n > 0 sticks unclipped whatever mu(v) is; for it the floor serves as the
+// limit and gives the same forces to the bit (a zero floor would not: it clamps a -0 force to
+// +0). holds_within(floor) says, per lane, whether the contact's trial spring force and its
+// sticking force (spring and dashpot, the same sum the law forms, bit for bit under
+// -ffp-contract=off) are within the floor. The laws that cost an exp or a table search are
+// evaluated only when some lane of the batch may slip or be clipped: the same bits, less work
+// while the cask stands or rocks on a pivot that holds.
 template <FrictionLaw Law, class T, class HoldsWithin>
 inline T friction_limit(const Model& model, const LaneParameters<T>& lane_parameters, const T& slip_speed,
                         const lane::Mask<T>& was_slipping, const T& normal_force, HoldsWithin&& holds_within) {
   if constexpr (Law == FrictionLaw::exponential || Law == FrictionLaw::tabulated) {
+    const T zero = lane::broadcast<T>(0.0);
     const T floor = lowest_friction<Law>(model, lane_parameters) * normal_force;
-    if (lane::all(holds_within(floor) || (normal_force == lane::broadcast<T>(0.0)))) return floor;
+    if (lane::all((holds_within(floor) && floor > zero) || normal_force == zero)) return floor;
   }
   return friction_coefficient<Law>(model, lane_parameters, slip_speed, was_slipping) * normal_force;
 }

@@ -81,9 +81,10 @@ template <class T>
   static constexpr std::array<double, 9> cosine_tail = {
       -1.0 / 2.0,          1.0 / 24.0,          -1.0 / 720.0,           1.0 / 40320.0,          -1.0 / 3628800.0,
       1.0 / 479001600.0, -1.0 / 87178291200.0, 1.0 / 20922789888000.0, -1.0 / 6402373705728000.0};
-  // A rocking cask's rotation stays well inside the first octant. There k = +-0, the reduced
-  // argument is a (but +0 for a = -0, which the polynomial turns to +0 too) and the quadrant
-  // is 0: this branch, taken when every lane is there, gives the reduction's bits for less work.
+  // A rocking cask's rotation stays well inside the first octant. For |a| < 0.75 (pi/4 = 0.785
+  // less room for the rounding of a 2/pi) k = +-0, the reduced argument is a (but +0 for
+  // a = -0, which the polynomial turns to +0 too) and the quadrant is 0: this branch, taken
+  // when every lane is there, gives the reduction's bits for less work.
   if (lane::all(lane::abs(a) < broadcast<T>(0.75))) {
     const T z = a * a;
     return {a + (a * z) * estrin(z, sine_tail), broadcast<T>(1.0) + z * estrin(z, cosine_tail)};

@@ -141,7 +141,9 @@ Model build_model(const ModelSpec& spec, const RealisationParameters& nominal) {
       if (i > 0 && !(table[i].first > table[i - 1].first)) {
         throw std::invalid_argument("friction table speeds must increase strictly");
       }
-      if (!(table[i].second >= 0.0)) throw std::invalid_argument("friction coefficients must be non-negative");
+      if (!(table[i].second >= 0.0) || !std::isfinite(table[i].second) || !std::isfinite(table[i].first)) {
+        throw std::invalid_argument("friction table entries must be finite and the coefficients non-negative");
+      }
       m.friction_table_speed[i] = table[i].first;
       m.friction_table_coefficient[i] = table[i].second;
     }
@@ -192,8 +194,9 @@ Model build_model(const ModelSpec& spec, const RealisationParameters& nominal) {
 
 LaneParameters<double> lane_parameters(const Model& model, const RealisationParameters& p) {
   if (!(p.mass > 0.0) || !(p.inertia > 0.0)) throw std::invalid_argument("mass and inertia must be positive");
-  if (!(p.friction_static >= 0.0) || !(p.friction_kinetic >= 0.0)) {
-    throw std::invalid_argument("friction coefficients must be non-negative");
+  if (!(p.friction_static >= 0.0) || !(p.friction_kinetic >= 0.0) || !std::isfinite(p.friction_static) ||
+      !std::isfinite(p.friction_kinetic)) {
+    throw std::invalid_argument("friction coefficients must be finite and non-negative");
   }
   if (!(p.friction_decay_speed > 0.0)) throw std::invalid_argument("the friction decay speed must be positive");
   if (!(p.damping_ratio >= 0.0)) throw std::invalid_argument("the damping ratio must be non-negative");

@@ -107,6 +107,17 @@ TEST_F(CaseErrors, KeyOfAnotherFrictionLaw) {
   EXPECT_THAT(error_of(file), HasSubstr("key friction.static: does not apply to friction law \"constant\""));
 }
 
+// An infinite friction coefficient would make a contact's limit inf x 0 = NaN where it opens
+// (and the friction floor of kernels/friction_law.h assumes finite coefficients).
+TEST_F(CaseErrors, AnInfiniteTabulatedFrictionIsRefused) {
+  const auto file = variant("friction-inf",
+                            "law = \"exponential\"\nstatic = 0.60\nkinetic = 0.45\ndecay_speed = \"5 cm/s\"",
+                            "law = \"table\"\ntable = [[0.0, 0.6], [0.1, inf]]");
+  const std::string e = error_of(file);
+  EXPECT_THAT(e, HasSubstr(file.string() + ":" + std::to_string(line_of(file, "table = ")) + ": key friction.table"));
+  EXPECT_THAT(e, HasSubstr("expected two finite numbers in each pair"));
+}
+
 TEST_F(CaseErrors, TomlSyntaxErrorGivesLine) {
   const auto file = variant("syntax", "cycles = 10", "cycles = = 10");
   const std::string e = error_of(file);
