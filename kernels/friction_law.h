@@ -38,7 +38,8 @@ inline T tabulated_friction(const Model& model, const T& slip_speed) {
     // Rows are visited in increasing speed, so the last segment the speed reached wins.
     mu = lane::select(slip_speed >= broadcast<T>(v0), segment, mu);
   }
-  return mu;
+  // A segment falling to a zero row can round a few ulp below zero; friction never pushes.
+  return lane::max(mu, broadcast<T>(0.0));
 }
 
 template <FrictionLaw Law, class T>
@@ -63,21 +64,23 @@ inline T friction_coefficient(const Model& model, const LaneParameters<T>& lane_
 // interpolation mu0 + slope (v - v0), are computed with a few roundings of numbers as large as
 // the highest coefficient, so each can fall a few ulp of that below the lowest one (mu_s = 1e-6
 // against mu_k = 0.5 gives 1e-6 - 2.7e-17). The floor keeps 1e-12 of the highest coefficient
-// clear of them, and is never negative.
+// clear of them (and 1e-300 besides, where that product is too small to count: subnormal
+// coefficients), and is never negative.
 template <FrictionLaw Law, class T>
 inline T lowest_friction(const Model& model, const LaneParameters<T>& lane_parameters) {
-  constexpr double clearance = 1e-12;
+  constexpr double clearance = 1e-12, least_clearance = 1e-300;
   if constexpr (Law == FrictionLaw::tabulated) {
     double lowest = model.friction_table_coefficient[0], highest = lowest;
     for (int row = 1; row < model.friction_table_size; ++row) {
       lowest = std::min(lowest, model.friction_table_coefficient[row]);
       highest = std::max(highest, model.friction_table_coefficient[row]);
     }
-    return lane::broadcast<T>(std::max(0.0, lowest - clearance * highest));
+    return lane::broadcast<T>(std::max(0.0, lowest - clearance * highest - least_clearance));
   } else {
     const T lowest = lane::min(lane_parameters.friction_static, lane_parameters.friction_kinetic);
     const T highest = lane::max(lane_parameters.friction_static, lane_parameters.friction_kinetic);
-    return lane::max(lowest - lane::broadcast<T>(clearance) * highest, lane::broadcast<T>(0.0));
+    return lane::max(lowest - lane::broadcast<T>(clearance) * highest - lane::broadcast<T>(least_clearance),
+                     lane::broadcast<T>(0.0));
   }
 }
 

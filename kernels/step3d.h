@@ -22,6 +22,8 @@
 // magnitude at mu F_n along its own direction (Cundall 1988, the 3D DEM's Mohr-Coulomb
 // slider), with the stiffness-proportional dashpot -beta K_s v_s while it sticks.
 
+#include <limits>
+
 #include "kernels/contact_law.h"
 #include "kernels/end_criteria.h"
 #include "kernels/friction_law.h"
@@ -106,11 +108,13 @@ inline Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p, 
   const T dashpot_z = -p.damping_beta * shear_stiffness * slip_z;
   const T sticking_x = trial_x + dashpot_x, sticking_z = trial_z + dashpot_z;
   // Squares against a square a little inside the floor's, so that the magnitudes taken below
-  // (square roots of these same sums) are within the floor whatever their rounding.
+  // (square roots of these same sums) are within the floor whatever their rounding; not where
+  // the squares underflow (a floor below 1e-154 N), whose rounding is no longer relative.
   const T limit = friction_limit<Law>(model, p, slip_speed, was_slipping, normal, [&](const T& floor) {
     const T inside = floor * broadcast<T>(1.0 - 1e-12);
     const T floor_squared = inside * inside;
-    return trial_squared <= floor_squared && sticking_x * sticking_x + sticking_z * sticking_z <= floor_squared;
+    return floor_squared >= broadcast<T>(std::numeric_limits<double>::min()) && trial_squared <= floor_squared &&
+           sticking_x * sticking_x + sticking_z * sticking_z <= floor_squared;
   });
   const auto slipping = touching && (trial > limit);
   // Both branches computed, blended per lane: slip caps the spring at mu F_n along its own

@@ -185,6 +185,10 @@ void read_friction(TableReader& root, Case& c) {
       if (rows[i].second < 0.0) t.fail(key, "friction coefficients must be non-negative");
       if (i == 0 && rows[i].first != 0.0) t.fail(key, "the first row must be at slip speed 0");
       if (i > 0 && !(rows[i].first > rows[i - 1].first)) t.fail(key, "slip speeds must increase from row to row");
+      if (i > 0 && !std::isfinite((rows[i].second - rows[i - 1].second) / (rows[i].first - rows[i - 1].first))) {
+        t.fail(key, "rows " + std::to_string(i) + " and " + std::to_string(i + 1) +
+                        " are too close in speed for their change of coefficient");
+      }
     }
     p.friction_static = p.friction_kinetic = rows.front().second;
   }

@@ -131,23 +131,7 @@ Model build_model(const ModelSpec& spec, const RealisationParameters& nominal) {
   m.contact_stiffness_scale = spec.contact_stiffness_scale;
   m.rounding_radius = spec.section.rounding;
   m.friction_law = spec.friction_law;
-  if (spec.friction_law == FrictionLaw::tabulated) {
-    const auto& table = spec.friction_table;
-    if (table.size() < 2 || static_cast<int>(table.size()) > kMaxFrictionTable) {
-      throw std::invalid_argument("a friction table needs 2 to " + std::to_string(kMaxFrictionTable) + " rows");
-    }
-    m.friction_table_size = static_cast<int>(table.size());
-    for (std::size_t i = 0; i < table.size(); ++i) {
-      if (i > 0 && !(table[i].first > table[i - 1].first)) {
-        throw std::invalid_argument("friction table speeds must increase strictly");
-      }
-      if (!(table[i].second >= 0.0) || !std::isfinite(table[i].second) || !std::isfinite(table[i].first)) {
-        throw std::invalid_argument("friction table entries must be finite and the coefficients non-negative");
-      }
-      m.friction_table_speed[i] = table[i].first;
-      m.friction_table_coefficient[i] = table[i].second;
-    }
-  }
+  if (spec.friction_law == FrictionLaw::tabulated) set_friction_table(m, spec.friction_table);
   m.gravity = spec.gravity;
 
   const double standing = total_standing_normal_stiffness(m);
@@ -190,6 +174,29 @@ Model build_model(const ModelSpec& spec, const RealisationParameters& nominal) {
                                 number_text(facts.stable_time_step) + " s of the contact springs; lower the safety factor");
   }
   return m;
+}
+
+void set_friction_table(Model& m, const std::vector<std::pair<double, double>>& table) {
+  if (table.size() < 2 || static_cast<int>(table.size()) > kMaxFrictionTable) {
+    throw std::invalid_argument("a friction table needs 2 to " + std::to_string(kMaxFrictionTable) + " rows");
+  }
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    if (!(table[i].second >= 0.0) || !std::isfinite(table[i].second) || !std::isfinite(table[i].first)) {
+      throw std::invalid_argument("friction table entries must be finite and the coefficients non-negative");
+    }
+    if (i > 0 && !(table[i].first > table[i - 1].first)) {
+      throw std::invalid_argument("friction table speeds must increase strictly");
+    }
+    if (i > 0 && !std::isfinite((table[i].second - table[i - 1].second) / (table[i].first - table[i - 1].first))) {
+      throw std::invalid_argument("friction table rows " + std::to_string(i) + " and " + std::to_string(i + 1) +
+                                  " are too close in speed for their change of coefficient");
+    }
+  }
+  m.friction_table_size = static_cast<int>(table.size());
+  for (std::size_t i = 0; i < table.size(); ++i) {
+    m.friction_table_speed[i] = table[i].first;
+    m.friction_table_coefficient[i] = table[i].second;
+  }
 }
 
 LaneParameters<double> lane_parameters(const Model& model, const RealisationParameters& p) {

@@ -71,6 +71,10 @@ RealisationParameters nominal_parameters(const ModelSpec& spec);  // mass proper
 
 // Throws std::invalid_argument when the specification cannot make a stable model.
 Model build_model(const ModelSpec& spec, const RealisationParameters& nominal);
+// The tabulated law's rows into the model (2D and 3D), refusing a table it cannot evaluate:
+// 2 to kMaxFrictionTable rows, finite, speeds increasing, coefficients non-negative, and each
+// segment's slope finite (rows too close in speed would give inf x 0 at a row).
+void set_friction_table(Model& model, const std::vector<std::pair<double, double>>& table);
 LaneParameters<double> lane_parameters(const Model& model, const RealisationParameters& parameters);
 
 // Numbers derived from a model that users and tests want to see.

@@ -104,11 +104,7 @@ Model3D build_model3d(const ModelSpec& spec, const CaskSpec3D& cask, const Reali
   m.corner_count = 0;
   m.contact_stiffness_scale = scale;
   m.friction_law = spec.friction_law;
-  m.friction_table_size = static_cast<int>(spec.friction_table.size());
-  for (std::size_t i = 0; i < spec.friction_table.size() && i < static_cast<std::size_t>(kMaxFrictionTable); ++i) {
-    m.friction_table_speed[i] = spec.friction_table[i].first;
-    m.friction_table_coefficient[i] = spec.friction_table[i].second;
-  }
+  if (spec.friction_law == FrictionLaw::tabulated) set_friction_table(m, spec.friction_table);
   m.gravity = spec.gravity;
   if (!(spec.safety_factor > 0.0)) throw std::invalid_argument("the safety factor must be positive");
   m.time_step = spec.time_step > 0.0 ? spec.time_step : spec.safety_factor * 2.0 * std::sqrt(nominal.mass / standing_stiffness(c));

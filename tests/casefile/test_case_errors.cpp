@@ -118,6 +118,15 @@ TEST_F(CaseErrors, AnInfiniteTabulatedFrictionIsRefused) {
   EXPECT_THAT(e, HasSubstr("expected two finite numbers in each pair"));
 }
 
+TEST_F(CaseErrors, AFrictionTableWithRowsTooCloseForItsSlopeIsRefused) {
+  const auto file = variant("friction-slope",
+                            "law = \"exponential\"\nstatic = 0.60\nkinetic = 0.45\ndecay_speed = \"5 cm/s\"",
+                            "law = \"table\"\ntable = [[0.0, 0.6], [1e-310, 0.3]]");
+  const std::string e = error_of(file);
+  EXPECT_THAT(e, HasSubstr(file.string() + ":" + std::to_string(line_of(file, "table = ")) + ": key friction.table"));
+  EXPECT_THAT(e, HasSubstr("rows 1 and 2 are too close in speed"));
+}
+
 TEST_F(CaseErrors, TomlSyntaxErrorGivesLine) {
   const auto file = variant("syntax", "cycles = 10", "cycles = = 10");
   const std::string e = error_of(file);
