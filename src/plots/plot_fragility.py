@@ -1,11 +1,14 @@
 """Fragility curves of a caskdem ensemble: fitted lognormal curves with their bootstrap
-bands and the stripe probabilities with their binomial intervals.
+bands and the stripe probabilities with their binomial intervals. With epistemic parameters,
+also each outer point's curve and the family's 5 % and 95 % confidence curves (median
+A_m exp(-+1.645 beta_U), spread beta_R; docs/risk.md).
 
 Usage: plot_fragility.py RESULT.h5 OUT.png
 Reads the layout written by `caskdem ensemble` (docs/output.md).
 """
 import math
 import sys
+import textwrap
 
 import h5py
 import matplotlib
@@ -53,6 +56,13 @@ def main(result_file, png_file):
                 state["band_high"] = group["band_upper"][:]
             else:
                 state["reason"] = text(group.attrs["not_fitted_because"])
+            if "epistemic" in group:
+                e = group["epistemic"]
+                # Unfitted outer points hold 0 (docs/output.md).
+                state["outer"] = [(m * factor, b) for m, b in zip(e["outer_median"][:], e["outer_log_std"][:]) if m > 0.0 and b > 0.0]
+                if int(e.attrs["fitted"]) and float(e.attrs["beta_r"]) > 0.0:
+                    state["family"] = {k: float(e.attrs[k]) for k in ("median", "beta_r", "beta_u")}
+                    state["family"]["median"] *= factor
             states.append(state)
 
     fig, ax = plt.subplots(figsize=(8.5, 5.5))
@@ -60,22 +70,36 @@ def main(result_file, png_file):
     for i, s in enumerate(states):
         colour = colours[i % len(colours)]
         errors = np.vstack([s["p"] - s["low"], s["high"] - s["p"]])
+        x = s["band_im"] if s["fitted"] else np.linspace(0.5 * s["level"].min(), 1.5 * s["level"].max(), 201)
+        family = s.get("family")
         if s["fitted"]:
-            x = s["band_im"]
             curve = [phi(math.log(v / s["median"]) / s["beta"]) for v in x]
             ax.fill_between(x, s["band_low"], s["band_high"], color=colour, alpha=0.18, lw=0)
-            ax.plot(x, curve, color=colour,
-                    label="%s: median %.3g, beta %.2f" % (s["name"], s["median"], s["beta"]))
+            name = "%s: median %.3g, beta %.2f" % (s["name"], s["median"], s["beta"])
+            if family:
+                name += "; A_m %.3g, beta_R %.2f, beta_U %.2f" % (family["median"], family["beta_r"], family["beta_u"])
+            ax.plot(x, curve, color=colour, label=name)
         else:
-            ax.plot([], [], color=colour, label="%s: no curve (%s)" % (s["name"], s["reason"]))
+            # A reason can be long: wrapped, so that the legend stays inside the figure.
+            ax.plot([], [], color=colour, label=textwrap.fill("%s: no curve (%s)" % (s["name"], s["reason"]), 80))
         ax.errorbar(s["level"], s["p"], yerr=errors, fmt="o", color=colour, ms=4, capsize=2)
+        for median, beta in s.get("outer", []):
+            ax.plot(x, [phi(math.log(v / median) / beta) for v in x], color=colour, lw=0.5, alpha=0.35)
+        if family:
+            # The members whose median is exceeded with 95 % (z < 0) and 5 % confidence.
+            for z in (-1.645, 1.645):
+                median = family["median"] * math.exp(z * family["beta_u"])
+                ax.plot(x, [phi(math.log(v / median) / family["beta_r"]) for v in x], color=colour, lw=1.0, ls="--")
     ax.set_xlabel(label)
     ax.set_ylabel("probability of exceedance")
     ax.set_ylim(-0.02, 1.02)
     ax.grid(True, lw=0.3)
-    ax.legend(fontsize=8, loc="upper left")
-    ax.set_title("%s\n%d/%d realisations; curves: lognormal MLE, band: bootstrap over records; points: stripes "
-                 "with Clopper-Pearson intervals" % (title, completed, total), fontsize=9)
+    ax.legend(fontsize=8, loc="lower right")
+    caption = ("%s\n%d/%d realisations; curves: lognormal MLE, band: bootstrap over records; points: stripes "
+               "with Clopper-Pearson intervals" % (title, completed, total))
+    if any(s.get("outer") for s in states):
+        caption += "\nthin: each outer point's curve; dashed: the family's 95 % and 5 % confidence curves (beta_R)"
+    ax.set_title(caption, fontsize=9)
     fig.tight_layout()
     fig.savefig(png_file, dpi=130)
 

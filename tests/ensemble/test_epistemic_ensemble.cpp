@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <regex>
 #include <set>
@@ -117,6 +118,10 @@ TEST_F(EpistemicEnsemble, TheResultCarriesTheFamilyAndRiskTakesBetaUFromIt) {
   }
   ASSERT_GT(families, 0) << run.output;
   EXPECT_THAT(run.output, HasSubstr("family"));
+  // The PNG draws the family from the same groups (src/plots/plot_fragility.py).
+  const testing::Outcome plot = testing::run_caskdem("plot " + result.string() + " --out " + (dir_ / "family.png").string());
+  ASSERT_EQ(plot.status, 0) << plot.output;
+  EXPECT_GT(std::filesystem::file_size(dir_ / "family.png"), 0u);
 
   const auto hazard = write("pga.csv", [] {
     std::string t = "PGA [g], annual frequency\n";
