@@ -69,8 +69,9 @@ TEST(Sliding, WideBlockFollowsRigidPlasticTwoWaySliding) {
 // The max slide under two sines at 0.6 g (2 and 5.4 Hz, so stick and slip alternate
 // irregularly) at f_s = 0.0025 .. 0.04, halving: each halving of the step must shrink the change
 // of the answer by 1.6 to 4.5 (an observed order between 0.7 and 2.2). Measured, it is first
-// order (ratios 1.8 to 2.15): the slider, not the central differences' second order, sets how
-// the answer moves with the step (docs/time-step.md, "Where the step's bias comes from").
+// order (ratios 1.8 to 2.15): the slider's dashpots, read at the half step, not the central
+// differences' second order, set how the answer moves with the step (docs/time-step.md,
+// "Where the step's bias comes from").
 TEST(Sliding, MaxSlideConvergesAsTheStepFalls) {
   for (FrictionLaw law : {FrictionLaw::constant, FrictionLaw::exponential}) {
     std::vector<double> slide;
