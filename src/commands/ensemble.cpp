@@ -27,18 +27,6 @@ namespace caskdem::commands {
 
 namespace {
 
-std::string format_level(IntensityMeasure measure, double value) {
-  std::ostringstream out;
-  out << std::setprecision(4);
-  switch (measure) {
-    case IntensityMeasure::pga:
-    case IntensityMeasure::sa: out << units::si_to_g(value) << " g"; break;
-    case IntensityMeasure::pgv: out << 100.0 * value << " cm/s"; break;
-    default: out << value; break;
-  }
-  return out.str();
-}
-
 struct EnsembleOptions {
   std::string file, out, isa = "automatic";
   int threads = 0;
@@ -97,7 +85,7 @@ void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const
   for (const LimitStateSummary& s : report.limit_states) {
     std::cout << std::left << std::setw(20) << s.limit_state.name;
     if (s.fit.fitted) {
-      std::cout << "median " << format_level(spec.measure, s.fit.median) << ", log-std " << s.fit.log_std
+      std::cout << "median " << intensity_text(spec.measure, s.fit.median) << ", log-std " << s.fit.log_std
                 << " (max misfit " << s.misfit.max_abs_difference << ", chi-square p " << s.misfit.p_value << ")\n";
     } else {
       std::cout << "no curve: " << s.fit.reason << "\n";
@@ -106,8 +94,8 @@ void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const
       const fragility::NestedFit& n = s.nested;
       std::cout << std::setw(20) << "  family";
       if (n.fitted) {
-        std::cout << "A_m " << format_level(spec.measure, n.median) << " [" << format_level(spec.measure, n.median_low)
-                  << ", " << format_level(spec.measure, n.median_high) << "], beta_R " << n.beta_r << " ["
+        std::cout << "A_m " << intensity_text(spec.measure, n.median) << " [" << intensity_text(spec.measure, n.median_low)
+                  << ", " << intensity_text(spec.measure, n.median_high) << "], beta_R " << n.beta_r << " ["
                   << n.beta_r_low << ", " << n.beta_r_high << "], beta_U " << n.beta_u << " [" << n.beta_u_low << ", "
                   << n.beta_u_high << "] (" << 100.0 * n.confidence << " %, " << n.outer_points << " outer points)\n";
       } else {

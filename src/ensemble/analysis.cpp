@@ -48,7 +48,8 @@ std::vector<LimitStateSummary> analyse(const EnsemblePlan& plan, const EnsembleR
       trials.push_back(p.trials);
       counts.push_back(p.count);
     }
-    s.fit = fragility::fit_lognormal(spec.levels, trials, counts);
+    s.fit = fragility::fit_lognormal(spec.levels, trials, counts,
+                                     [&](double level) { return intensity_text(spec.measure, level); });
     if (s.fit.fitted) {
       // Each limit state gets its own stream of bootstrap numbers.
       s.band = fragility::bootstrap_band(data, grid, spec.bootstrap_replicates, spec.confidence, spec.seed + 7919 * (l + 1));

@@ -5,11 +5,13 @@
 #include <algorithm>
 #include <cmath>
 #include <fstream>
+#include <iomanip>
 #include <numbers>
 #include <sstream>
 
 #include "core/error.h"
 #include "core/text.h"
+#include "core/units.h"
 
 namespace caskdem {
 
@@ -101,6 +103,19 @@ std::string intensity_name(IntensityMeasure measure) {
     case IntensityMeasure::sa: return "sa";
   }
   return "pga";
+}
+
+std::string intensity_text(IntensityMeasure measure, double value) {
+  std::ostringstream out;
+  out << std::setprecision(4);
+  switch (measure) {
+    case IntensityMeasure::pga:
+    case IntensityMeasure::sa: out << units::si_to_g(value) << " g"; break;
+    case IntensityMeasure::pgv: out << units::m_to_cm(value) << " cm/s"; break;
+    case IntensityMeasure::pga_ratio:
+    case IntensityMeasure::pgv_ratio: out << value; break;
+  }
+  return out.str();
 }
 
 const KeySchema& ensemble_file_keys() {

@@ -27,6 +27,8 @@ enum class IntensityMeasure {
   sa,         // pseudo-spectral acceleration Sa(T, zeta) of the table motion, m/s^2
 };
 std::string intensity_name(IntensityMeasure measure);
+// A level of the measure (SI inside) as the user reads it: "0.6 g", "40 cm/s", or the ratio.
+std::string intensity_text(IntensityMeasure measure, double value);
 
 struct LimitState {
   enum class Kind { tip_over, rotation_ratio, sliding };

@@ -355,18 +355,25 @@ nlopt_result maximise_scaled(const LikelihoodProblem& problem, const std::array<
   return result;
 }
 
-std::string describe_separation(const PooledStripes& stripes, std::size_t last_not_all, std::size_t first_some) {
+std::string describe_separation(const PooledStripes& stripes, std::size_t last_not_all, std::size_t first_some,
+                                const LevelText& level_text) {
+  const auto level = [&](std::size_t k) {
+    const double im = std::exp(stripes.log_level[k]);
+    if (level_text) return level_text(im);
+    std::ostringstream out;
+    out << "IM " << im;
+    return out.str();
+  };
   std::ostringstream reason;
   if (stripes.trials.size() == 1) {
-    reason << "only one stripe has runs (IM " << std::exp(stripes.log_level[0])
+    reason << "only one stripe has runs (" << level(0)
            << "): one fraction cannot fix both median and log_std (not identifiable)";
   } else if (last_not_all == first_some) {
-    reason << "only one stripe (IM " << std::exp(stripes.log_level[first_some])
+    reason << "only one stripe (" << level(first_some)
            << ") lies between no exceedance below and all exceeding above, so log_std -> 0 (not identifiable)";
   } else {
-    reason << "the stripes are perfectly separated (none exceed up to IM " << std::exp(stripes.log_level[last_not_all])
-           << ", all exceed from IM " << std::exp(stripes.log_level[first_some])
-           << "), so the maximum likelihood is a step, log_std -> 0 (not identifiable)";
+    reason << "the stripes are perfectly separated (none exceed up to " << level(last_not_all) << ", all exceed from "
+           << level(first_some) << "), so the maximum likelihood is a step, log_std -> 0 (not identifiable)";
   }
   return reason.str();
 }
@@ -445,7 +452,7 @@ std::vector<StripeProbability> stripe_probabilities(const StripeData& data, doub
 }
 
 LognormalFit fit_lognormal(const std::vector<double>& levels, const std::vector<std::int64_t>& trials,
-                           const std::vector<std::int64_t>& counts) {
+                           const std::vector<std::int64_t>& counts, const LevelText& level_text) {
   LognormalFit fit;
   const PooledStripes stripes = pool_stripes(levels, trials, counts);
   const std::size_t stripe_count = stripes.trials.size();
@@ -468,7 +475,7 @@ LognormalFit fit_lognormal(const std::vector<double>& levels, const std::vector<
     return fit;
   }
   if (last_not_all <= first_some) {
-    fit.reason = describe_separation(stripes, last_not_all, first_some);
+    fit.reason = describe_separation(stripes, last_not_all, first_some, level_text);
     return fit;
   }
 

@@ -12,6 +12,7 @@
 // checked against the binned Monte Carlo values.
 
 #include <cstdint>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -58,8 +59,11 @@ struct LognormalFit {
 // runs are ignored. Throws std::invalid_argument for mismatched sizes, a level that is not finite
 // and > 0, or a count outside [0, trials]. median, log_std and log_likelihood are never NaN (they
 // hold the rejected optimum when the optimiser ran, else 0).
+// level_text writes a level as the user reads it (its unit) in the reason a curve is not fitted;
+// without it, a level is written as the number given ("IM 5.88").
+using LevelText = std::function<std::string(double)>;
 LognormalFit fit_lognormal(const std::vector<double>& levels, const std::vector<std::int64_t>& trials,
-                           const std::vector<std::int64_t>& counts);
+                           const std::vector<std::int64_t>& counts, const LevelText& level_text = nullptr);
 
 double fragility_probability(const LognormalFit& fit, double im);  // Phi(ln(im/median)/log_std)
                                                                     // (0 if !fit.fitted or im <= 0)

@@ -16,6 +16,8 @@
 #include <random>
 #include <vector>
 
+#include "core/units.h"
+#include "ensemble/ensemble_file.h"
 #include "ensemble/fragility.h"
 
 namespace caskdem::fragility {
@@ -293,6 +295,23 @@ TEST(FitLognormal, DegenerateDataAreNotFitted) {
   EXPECT_THROW(fit_lognormal({0.2, 0.4}, {10}, {1}), std::invalid_argument);
   EXPECT_THROW(fit_lognormal({0.2, 0.4}, {10, 10}, {1, 11}), std::invalid_argument);
   EXPECT_THROW(fit_lognormal({0.0, 0.4}, {10, 10}, {1, 5}), std::invalid_argument);
+}
+
+TEST(FitLognormal, AReasonNamesTheLevelsInTheUsersUnit) {
+  // PGA stripes at 0.2, 0.4, 0.8 g, held in m/s^2: the reason a step is not fitted says g.
+  const std::vector<double> levels = {units::g_to_si(0.2), units::g_to_si(0.4), units::g_to_si(0.8)};
+  const auto in_g = [](double level) { return intensity_text(IntensityMeasure::pga, level); };
+  const LognormalFit step = fit_lognormal(levels, {50, 50, 50}, {0, 0, 50}, in_g);
+  ASSERT_FALSE(step.fitted);
+  EXPECT_NE(step.reason.find("none exceed up to 0.4 g, all exceed from 0.8 g"), std::string::npos) << step.reason;
+  const LognormalFit partial = fit_lognormal(levels, {50, 50, 50}, {0, 20, 50}, in_g);
+  EXPECT_NE(partial.reason.find("only one stripe (0.4 g)"), std::string::npos) << partial.reason;
+  // PGV in cm/s; and without a unit, the number as given.
+  const LognormalFit pgv = fit_lognormal({0.2, 0.4}, {50, 50}, {0, 50},
+                                         [](double level) { return intensity_text(IntensityMeasure::pgv, level); });
+  EXPECT_NE(pgv.reason.find("up to 20 cm/s, all exceed from 40 cm/s"), std::string::npos) << pgv.reason;
+  EXPECT_NE(fit_lognormal({0.2, 0.4}, {50, 50}, {0, 50}).reason.find("up to IM 0.2, all exceed from IM 0.4"),
+            std::string::npos);
 }
 
 TEST(FitLognormal, SparseExceedancesStillFitWithFiniteValues) {
