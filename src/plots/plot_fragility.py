@@ -59,7 +59,8 @@ def main(result_file, png_file):
             if "epistemic" in group:
                 e = group["epistemic"]
                 # Unfitted outer points hold 0 (docs/output.md).
-                state["outer"] = [(m * factor, b) for m, b in zip(e["outer_median"][:], e["outer_log_std"][:]) if m > 0.0 and b > 0.0]
+                outer = zip(e["outer_median"][:], e["outer_log_std"][:])
+                state["outer"] = [(m * factor, b) for m, b in outer if m > 0.0 and b > 0.0]
                 if int(e.attrs["fitted"]) and float(e.attrs["beta_r"]) > 0.0:
                     state["family"] = {k: float(e.attrs[k]) for k in ("median", "beta_r", "beta_u")}
                     state["family"]["median"] *= factor
