@@ -94,8 +94,9 @@ NestedFit fit_nested(const std::vector<double>& levels, const std::vector<std::v
   int unfitted = 0;
   for (std::size_t j = 0; j < trials.size(); ++j) {
     const LognormalFit fit = fit_lognormal(levels, trials[j], counts[j]);
-    nested.outer_median.push_back(fit.median);
-    nested.outer_log_std.push_back(fit.log_std);
+    // An unfitted point holds zeros, not the optimum its fit rejected (docs/output.md).
+    nested.outer_median.push_back(fit.fitted ? fit.median : 0.0);
+    nested.outer_log_std.push_back(fit.fitted ? fit.log_std : 0.0);
     if (!fit.fitted) {
       ++unfitted;
       continue;

@@ -54,7 +54,7 @@ struct NestedFit {
   double median_low = 0.0, median_high = 0.0;
   double beta_r_low = 0.0, beta_r_high = 0.0;
   double beta_u_low = 0.0, beta_u_high = 0.0;
-  std::vector<double> outer_median, outer_log_std;  // each outer point's fit
+  std::vector<double> outer_median, outer_log_std;  // each outer point's fit (0 and 0 where not fitted)
 };
 
 // trials[j][k] and counts[j][k]: outer point j, stripe k at levels[k]. Not fitted (with the

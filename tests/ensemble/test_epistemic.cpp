@@ -102,5 +102,23 @@ TEST(NestedFragility, AnOuterPointThatCannotBeFittedLeavesTheWholeUnfitted) {
   EXPECT_NE(f.reason.find("1 of 5 outer points could not be fitted"), std::string::npos) << f.reason;
 }
 
+TEST(NestedFragility, AnOuterPointThatCannotBeFittedHoldsZeros) {
+  // Exceedances falling as the level rises: the optimiser runs and its optimum is rejected. The
+  // result file says such an outer point holds 0 (docs/output.md), not the rejected optimum.
+  std::mt19937_64 random(3);
+  std::vector<std::vector<std::int64_t>> trials(5, std::vector<std::int64_t>(12, 20)), counts;
+  for (int j = 0; j < 4; ++j) counts.push_back(counts_for(kMedian, 20, random));
+  counts.push_back({20, 19, 18, 17, 15, 13, 11, 9, 7, 5, 3, 1});
+  const LognormalFit alone = fit_lognormal(stripe_levels(), trials[4], counts[4]);
+  ASSERT_FALSE(alone.fitted);
+  ASSERT_GT(alone.median, 0.0) << "the optimiser ran: " << alone.reason;
+  const NestedFit f = fit_nested(stripe_levels(), trials, counts, 0.9, 1);
+  EXPECT_FALSE(f.fitted);
+  ASSERT_EQ(f.outer_median.size(), 5u);
+  EXPECT_EQ(f.outer_median[4], 0.0);
+  EXPECT_EQ(f.outer_log_std[4], 0.0);
+  for (int j = 0; j < 4; ++j) EXPECT_GT(f.outer_median[j], 0.0) << j;
+}
+
 }  // namespace
 }  // namespace caskdem::fragility
