@@ -11,8 +11,9 @@ could save, for several margins.
 
   bench/rest_tail.py RESULT.h5 RECORD.AT2 --time-scale 0.57735 [--margins 0.5,0.8,1.0]
 
-RESULT.h5 is a one-record ensemble's result file (caskdem ensemble); the record is a PEER
-NGA .AT2 file in g, its time compressed by --time-scale (1/sqrt(N) for a 1/N model).
+RESULT.h5 is a planar one-record ensemble's result file (caskdem ensemble) with a constant,
+static-kinetic or exponential friction law; the record is a PEER NGA .AT2 file in g, its time
+compressed by --time-scale (1/sqrt(N) for a 1/N model).
 """
 import argparse
 import re
@@ -35,11 +36,16 @@ def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("result")
     ap.add_argument("record")
-    ap.add_argument("--time-scale", type=float, default=1.0)
+    ap.add_argument("--time-scale", type=float, required=True,
+                    help="factor on the record's time: 1 at full scale, 1/sqrt(N) for a 1/N model")
     ap.add_argument("--margins", default="0.5,0.8,1.0")
     args = ap.parse_args()
 
     with h5py.File(args.result, "r") as f:
+        if int(f.attrs["dimensions"]) != 2:
+            raise SystemExit(f"{args.result}: a planar ensemble expected (its tilt about one axis)")
+        if 'law = "table"' in str(f.attrs["ensemble_toml"]):
+            raise SystemExit(f"{args.result}: a tabulated friction law: its lowest coefficient is not in the file")
         if f["motions/pga"].shape[0] != 1:
             raise SystemExit(f"{args.result}: one motion expected, found {f['motions/pga'].shape[0]}")
         alpha = float(f.attrs["stability_angle_rad"])

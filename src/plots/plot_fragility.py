@@ -82,7 +82,10 @@ def main(result_file, png_file):
             ax.plot(x, curve, color=colour, label=name)
         else:
             # A reason can be long: wrapped, so that the legend stays inside the figure.
-            ax.plot([], [], color=colour, label=textwrap.fill("%s: no curve (%s)" % (s["name"], s["reason"]), 80))
+            name = "%s: no curve (%s)" % (s["name"], s["reason"])
+            if family:
+                name += "; A_m %.3g, beta_R %.2f, beta_U %.2f" % (family["median"], family["beta_r"], family["beta_u"])
+            ax.plot([], [], color=colour, label=textwrap.fill(name, 80))
         ax.errorbar(s["level"], s["p"], yerr=errors, fmt="o", color=colour, ms=4, capsize=2)
         for median, beta in s.get("outer", []):
             ax.plot(x, [phi(math.log(v / median) / beta) for v in x], color=colour, lw=0.5, alpha=0.35)
