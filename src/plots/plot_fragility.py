@@ -73,19 +73,17 @@ def main(result_file, png_file):
         errors = np.vstack([s["p"] - s["low"], s["high"] - s["p"]])
         x = s["band_im"] if s["fitted"] else np.linspace(0.5 * s["level"].min(), 1.5 * s["level"].max(), 201)
         family = s.get("family")
+        family_text = ("; A_m %.3g, beta_R %.2f, beta_U %.2f" % (family["median"], family["beta_r"], family["beta_u"])
+                       if family else "")
         if s["fitted"]:
             curve = [phi(math.log(v / s["median"]) / s["beta"]) for v in x]
             ax.fill_between(x, s["band_low"], s["band_high"], color=colour, alpha=0.18, lw=0)
             name = "%s: median %.3g, beta %.2f" % (s["name"], s["median"], s["beta"])
-            if family:
-                name += "; A_m %.3g, beta_R %.2f, beta_U %.2f" % (family["median"], family["beta_r"], family["beta_u"])
-            ax.plot(x, curve, color=colour, label=name)
+            ax.plot(x, curve, color=colour, label=name + family_text)
         else:
             # A reason can be long: wrapped, so that the legend stays inside the figure.
             name = "%s: no curve (%s)" % (s["name"], s["reason"])
-            if family:
-                name += "; A_m %.3g, beta_R %.2f, beta_U %.2f" % (family["median"], family["beta_r"], family["beta_u"])
-            ax.plot([], [], color=colour, label=textwrap.fill(name, 80))
+            ax.plot([], [], color=colour, label=textwrap.fill(name + family_text, 80))
         ax.errorbar(s["level"], s["p"], yerr=errors, fmt="o", color=colour, ms=4, capsize=2)
         for median, beta in s.get("outer", []):
             ax.plot(x, [phi(math.log(v / median) / beta) for v in x], color=colour, lw=0.5, alpha=0.35)

@@ -26,6 +26,11 @@ class CaseErrors : public testing::TemporaryFiles {
   std::filesystem::path variant(const std::string& name, const std::string& find, const std::string& replace) const {
     return variant_of(testing::case_path("model-1-3-sine.toml"), name + ".toml", find, replace);
   }
+  // The case's exponential friction law replaced by a `table`.
+  std::filesystem::path friction_table_variant(const std::string& name, const std::string& table) const {
+    return variant(name, "law = \"exponential\"\nstatic = 0.60\nkinetic = 0.45\ndecay_speed = \"5 cm/s\"",
+                   "law = \"table\"\ntable = " + table);
+  }
 };
 
 std::string error_of(const std::filesystem::path& file) {
@@ -107,24 +112,23 @@ TEST_F(CaseErrors, KeyOfAnotherFrictionLaw) {
   EXPECT_THAT(error_of(file), HasSubstr("key friction.static: does not apply to friction law \"constant\""));
 }
 
+// The error names the file, the table's line and key, and says `expected`.
+void expect_friction_table_refused(const std::filesystem::path& file, const std::string& expected) {
+  const std::string e = error_of(file);
+  EXPECT_THAT(e, HasSubstr(file.string() + ":" + std::to_string(line_of(file, "table = ")) + ": key friction.table"));
+  EXPECT_THAT(e, HasSubstr(expected));
+}
+
 // An infinite friction coefficient would make a contact's limit inf x 0 = NaN where it opens
 // (and the friction floor of kernels/friction_law.h assumes finite coefficients).
 TEST_F(CaseErrors, AnInfiniteTabulatedFrictionIsRefused) {
-  const auto file = variant("friction-inf",
-                            "law = \"exponential\"\nstatic = 0.60\nkinetic = 0.45\ndecay_speed = \"5 cm/s\"",
-                            "law = \"table\"\ntable = [[0.0, 0.6], [0.1, inf]]");
-  const std::string e = error_of(file);
-  EXPECT_THAT(e, HasSubstr(file.string() + ":" + std::to_string(line_of(file, "table = ")) + ": key friction.table"));
-  EXPECT_THAT(e, HasSubstr("expected two finite numbers in each pair"));
+  expect_friction_table_refused(friction_table_variant("friction-inf", "[[0.0, 0.6], [0.1, inf]]"),
+                                "expected two finite numbers in each pair");
 }
 
 TEST_F(CaseErrors, AFrictionTableWithRowsTooCloseForItsSlopeIsRefused) {
-  const auto file = variant("friction-slope",
-                            "law = \"exponential\"\nstatic = 0.60\nkinetic = 0.45\ndecay_speed = \"5 cm/s\"",
-                            "law = \"table\"\ntable = [[0.0, 0.6], [1e-310, 0.3]]");
-  const std::string e = error_of(file);
-  EXPECT_THAT(e, HasSubstr(file.string() + ":" + std::to_string(line_of(file, "table = ")) + ": key friction.table"));
-  EXPECT_THAT(e, HasSubstr("rows 1 and 2 are too close in speed"));
+  expect_friction_table_refused(friction_table_variant("friction-slope", "[[0.0, 0.6], [1e-310, 0.3]]"),
+                                "rows 1 and 2 are too close in speed");
 }
 
 TEST_F(CaseErrors, TomlSyntaxErrorGivesLine) {
