@@ -29,6 +29,7 @@
 // contact carries no force and forgets its shear spring.
 
 #include "kernels/friction_law.h"
+#include "kernels/host_device.h"
 #include "kernels/lane.h"
 #include "kernels/lane_state.h"
 #include "kernels/model.h"
@@ -46,8 +47,8 @@ struct CornerContact {
 // spring (with the soft layer) and dashpots, never pulling. Shared by the 2D corners and the 3D
 // cask's contact points (kernels/step3d.h).
 template <class T>
-inline T normal_force(const T& normal_stiffness, const LaneParameters<T>& lane_parameters, const T& gap,
-                      const T& normal_velocity) {
+CASKDEM_HOST_DEVICE inline T normal_force(const T& normal_stiffness, const LaneParameters<T>& lane_parameters,
+                                          const T& gap, const T& normal_velocity) {
   using lane::broadcast;
   using lane::select;
   const T zero = broadcast<T>(0.0);
@@ -63,9 +64,9 @@ inline T normal_force(const T& normal_stiffness, const LaneParameters<T>& lane_p
 }
 
 template <FrictionLaw Law, class T>
-inline CornerContact<T> corner_contact(const Model& model, const LaneParameters<T>& lane_parameters, int corner,
-                                       const T& gap, const T& normal_velocity, const T& slip_velocity,
-                                       const CornerState<T>& previous) {
+CASKDEM_HOST_DEVICE inline CornerContact<T> corner_contact(const Model& model, const LaneParameters<T>& lane_parameters,
+                                                           int corner, const T& gap, const T& normal_velocity,
+                                                           const T& slip_velocity, const CornerState<T>& previous) {
   using lane::broadcast;
   using lane::select;
   const T zero = broadcast<T>(0.0);

@@ -1,6 +1,7 @@
 #pragma once
 // How a lane's run ends (LaneStatus, kernels/model.h), shared by the 2D and 3D steps.
 
+#include "kernels/host_device.h"
 #include "kernels/lane.h"
 #include "kernels/model.h"
 
@@ -11,8 +12,8 @@ namespace caskdem::kernels {
 // verdict is worked out only in a batch where some lane stops (a branch on the whole batch,
 // so every lane's result is the same either way).
 template <class T, class M>
-inline void record_stop(const M& active, const M& finite, const M& tipped, const M& left_floor, const M& slid_off,
-                        const T& time, T& status, T& end_time) {
+CASKDEM_HOST_DEVICE inline void record_stop(const M& active, const M& finite, const M& tipped, const M& left_floor,
+                                            const M& slid_off, const T& time, T& status, T& end_time) {
   using lane::broadcast;
   using lane::select;
   const auto stopping = active && (!finite || tipped || left_floor || slid_off);

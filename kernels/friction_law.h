@@ -17,6 +17,7 @@
 
 #include <algorithm>
 
+#include "kernels/host_device.h"
 #include "kernels/lane.h"
 #include "kernels/lane_state.h"
 #include "kernels/model.h"
@@ -25,7 +26,7 @@
 namespace caskdem::kernels {
 
 template <class T>
-inline T tabulated_friction(const Model& model, const T& slip_speed) {
+CASKDEM_HOST_DEVICE inline T tabulated_friction(const Model& model, const T& slip_speed) {
   using lane::broadcast;
   T mu = broadcast<T>(model.friction_table_coefficient[0]);
   for (int row = 1; row < model.friction_table_size; ++row) {
@@ -43,8 +44,8 @@ inline T tabulated_friction(const Model& model, const T& slip_speed) {
 }
 
 template <FrictionLaw Law, class T>
-inline T friction_coefficient(const Model& model, const LaneParameters<T>& lane_parameters, const T& slip_speed,
-                              const lane::Mask<T>& was_slipping) {
+CASKDEM_HOST_DEVICE inline T friction_coefficient(const Model& model, const LaneParameters<T>& lane_parameters,
+                                                  const T& slip_speed, const lane::Mask<T>& was_slipping) {
   if constexpr (Law == FrictionLaw::constant) {
     return lane_parameters.friction_static;
   } else if constexpr (Law == FrictionLaw::static_kinetic) {
@@ -67,7 +68,7 @@ inline T friction_coefficient(const Model& model, const LaneParameters<T>& lane_
 // clear of them (and 1e-300 besides, where that product is too small to count: subnormal
 // coefficients), and is never negative.
 template <FrictionLaw Law, class T>
-inline T lowest_friction(const Model& model, const LaneParameters<T>& lane_parameters) {
+CASKDEM_HOST_DEVICE inline T lowest_friction(const Model& model, const LaneParameters<T>& lane_parameters) {
   constexpr double clearance = 1e-12, least_clearance = 1e-300;
   if constexpr (Law == FrictionLaw::tabulated) {
     double lowest = model.friction_table_coefficient[0], highest = lowest;
@@ -94,8 +95,9 @@ inline T lowest_friction(const Model& model, const LaneParameters<T>& lane_param
 // evaluated only when some lane of the batch may slip or be clipped: the same bits, less work
 // while the cask stands or rocks on a pivot that holds.
 template <FrictionLaw Law, class T, class HoldsWithin>
-inline T friction_limit(const Model& model, const LaneParameters<T>& lane_parameters, const T& slip_speed,
-                        const lane::Mask<T>& was_slipping, const T& normal_force, HoldsWithin&& holds_within) {
+CASKDEM_HOST_DEVICE inline T friction_limit(const Model& model, const LaneParameters<T>& lane_parameters,
+                                            const T& slip_speed, const lane::Mask<T>& was_slipping,
+                                            const T& normal_force, HoldsWithin&& holds_within) {
   if constexpr (Law == FrictionLaw::exponential || Law == FrictionLaw::tabulated) {
     const T zero = lane::broadcast<T>(0.0);
     const T floor = lowest_friction<Law>(model, lane_parameters) * normal_force;

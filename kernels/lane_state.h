@@ -4,6 +4,7 @@
 // is an aligned array over lanes (structure of arrays); for_each_field lists the fields
 // once, for loading, storing and sizing those arrays.
 
+#include "kernels/host_device.h"
 #include "kernels/model.h"
 
 namespace caskdem {
@@ -33,7 +34,7 @@ struct LaneParameters {
   T inverse_axial_inertia;  // 1/(kg m^2)
 
   template <class F>
-  void for_each_field(F&& f) {
+  CASKDEM_HOST_DEVICE void for_each_field(F&& f) {
     f(inverse_mass); f(inverse_inertia); f(centre_x); f(centre_y); f(friction_static); f(friction_kinetic);
     f(inverse_decay_speed); f(damping_beta); f(horizontal_scale); f(vertical_scale); f(stiffness_scale);
     f(impact_damping); f(floor_soft_ratio); f(floor_soft_depth); f(base_camber); f(wobble_damping);
@@ -52,7 +53,7 @@ struct BodyState {
   T omega;     // rad/s
 
   template <class F>
-  void for_each_field(F&& f) {
+  CASKDEM_HOST_DEVICE void for_each_field(F&& f) {
     f(x); f(y); f(theta); f(vx); f(vy); f(omega);
   }
   static constexpr int field_count = 6;
@@ -65,7 +66,7 @@ struct CornerState {
   T slipping;      // 1 if the contact slipped in the last step, else 0
 
   template <class F>
-  void for_each_field(F&& f) {
+  CASKDEM_HOST_DEVICE void for_each_field(F&& f) {
     f(shear_spring); f(slipping);
   }
   static constexpr int field_count = 2;
@@ -91,7 +92,7 @@ struct Response {
   T instability_time;    // last time |theta| rose past alpha (when a tipped cask passed its stability angle)
 
   template <class F>
-  void for_each_field(F&& f) {
+  CASKDEM_HOST_DEVICE void for_each_field(F&& f) {
     f(status); f(end_time); f(max_abs_rotation); f(max_abs_slide); f(max_uplift); f(final_rotation);
     f(final_slide); f(base_x0); f(rocking_side); f(impacts); f(current_peak);
     for (auto& p : peak) f(p);

@@ -3,6 +3,8 @@
 // 2D (kernels/lane_state.h): one realisation (double) or one per SIMD lane. The parameters
 // are the 2D ones (LaneParameters, with its axial inertia).
 
+#include "kernels/host_device.h"
+
 namespace caskdem {
 
 // Rigid-body state in the floor frame: the centre of mass and its velocity (at the half step),
@@ -16,7 +18,7 @@ struct BodyState3D {
   T pi_x, pi_y, pi_z;
 
   template <class F>
-  void for_each_field(F&& f) {
+  CASKDEM_HOST_DEVICE void for_each_field(F&& f) {
     f(x); f(y); f(z); f(vx); f(vy); f(vz); f(qw); f(qx); f(qy); f(qz); f(pi_x); f(pi_y); f(pi_z);
   }
   static constexpr int field_count = 13;
@@ -31,7 +33,7 @@ struct ContactState3D {
   T slipping;          // 1 if it slipped in the last step
 
   template <class F>
-  void for_each_field(F&& f) {
+  CASKDEM_HOST_DEVICE void for_each_field(F&& f) {
     f(shear_x); f(shear_z); f(stiffness); f(slipping);
   }
   static constexpr int field_count = 4;
@@ -51,7 +53,7 @@ struct Response3D {
   T instability_time;    // s, the last time the tilt rose past alpha
 
   template <class F>
-  void for_each_field(F&& f) {
+  CASKDEM_HOST_DEVICE void for_each_field(F&& f) {
     f(status); f(end_time); f(max_axis_departure); f(max_slide); f(max_uplift); f(base_x0); f(base_z0); f(spin);
     f(above_stability); f(instability_time);
   }

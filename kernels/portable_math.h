@@ -16,6 +16,7 @@
 #include <array>
 #include <cstddef>
 
+#include "kernels/host_device.h"
 #include "kernels/lane.h"
 
 namespace caskdem::kernels {
@@ -23,7 +24,7 @@ namespace caskdem::kernels {
 // sum_k c[k] x^k by Estrin's scheme: pair terms as c[2i] + c[2i+1] x, then pairs of pairs
 // with x^2, and so on. The order of operations is fixed, so every lane width agrees.
 template <class T, std::size_t N>
-inline T estrin(const T& x, const std::array<double, N>& c) {
+CASKDEM_HOST_DEVICE inline T estrin(const T& x, const std::array<double, N>& c) {
   std::array<T, (N + 1) / 2> level;
   for (std::size_t i = 0; i < N / 2; ++i) {
     level[i] = lane::broadcast<T>(c[2 * i]) + lane::broadcast<T>(c[2 * i + 1]) * x;
@@ -46,7 +47,7 @@ inline T estrin(const T& x, const std::array<double, N>& c) {
 //   exp(-x) = 2^-n exp(-r); exp(-r) by Taylor to degree 13 (remainder < 4e-18 relative),
 //   2^-n exactly from its exponent bits.
 template <class T>
-inline T exp_negative(T x) {
+CASKDEM_HOST_DEVICE inline T exp_negative(T x) {
   using lane::broadcast;
   static constexpr std::array<double, 14> taylor = {
       1.0,         1.0,          1.0 / 2.0,      1.0 / 6.0,       1.0 / 24.0,       1.0 / 120.0,        1.0 / 720.0,
@@ -72,7 +73,7 @@ struct SinCos {
 // Always inlined: as a call it would make every live SIMD register of the step a spill (none
 // survives a call in the x86-64 ABI); with its fast branch the compiler stopped inlining it.
 template <class T>
-[[gnu::always_inline]] inline SinCos<T> sin_cos(T a) {
+CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE SinCos<T> sin_cos(T a) {
   using lane::broadcast;
   using lane::select;
   static constexpr std::array<double, 8> sine_tail = {

@@ -17,6 +17,7 @@
 // step; the gyroscopic coupling of Euler's equations, omega x (I omega), is what the
 // sequence of rotations about different axes produces.
 
+#include "kernels/host_device.h"
 #include "kernels/lane.h"
 #include "kernels/portable_math.h"
 
@@ -37,16 +38,16 @@ template <class T>
 struct Rotation {
   T r00, r01, r02, r10, r11, r12, r20, r21, r22;
 
-  Vector3<T> apply(const Vector3<T>& v) const {  // R v
+  CASKDEM_HOST_DEVICE Vector3<T> apply(const Vector3<T>& v) const {  // R v
     return {r00 * v.x + r01 * v.y + r02 * v.z, r10 * v.x + r11 * v.y + r12 * v.z, r20 * v.x + r21 * v.y + r22 * v.z};
   }
-  Vector3<T> apply_transpose(const Vector3<T>& v) const {  // R^T v
+  CASKDEM_HOST_DEVICE Vector3<T> apply_transpose(const Vector3<T>& v) const {  // R^T v
     return {r00 * v.x + r10 * v.y + r20 * v.z, r01 * v.x + r11 * v.y + r21 * v.z, r02 * v.x + r12 * v.y + r22 * v.z};
   }
 };
 
 template <class T>
-inline Rotation<T> rotation_of(const Quaternion<T>& q) {
+CASKDEM_HOST_DEVICE inline Rotation<T> rotation_of(const Quaternion<T>& q) {
   const T one = lane::broadcast<T>(1.0), two = lane::broadcast<T>(2.0);
   const T xx = q.x * q.x, yy = q.y * q.y, zz = q.z * q.z;
   const T xy = q.x * q.y, xz = q.x * q.z, yz = q.y * q.z;
@@ -57,13 +58,14 @@ inline Rotation<T> rotation_of(const Quaternion<T>& q) {
 }
 
 template <class T>
-inline Vector3<T> cross(const Vector3<T>& a, const Vector3<T>& b) {
+CASKDEM_HOST_DEVICE inline Vector3<T> cross(const Vector3<T>& a, const Vector3<T>& b) {
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
 // One exact rotation about body axis j (0 = x, 1 = y, 2 = z) by theta = h pi_j / I_j.
 template <class T>
-inline void rotate_about_body_axis(int axis, const T& h, const T& inverse_inertia, Quaternion<T>& q, Vector3<T>& pi) {
+CASKDEM_HOST_DEVICE inline void rotate_about_body_axis(int axis, const T& h, const T& inverse_inertia, Quaternion<T>& q,
+                                                       Vector3<T>& pi) {
   const T momentum = axis == 0 ? pi.x : axis == 1 ? pi.y : pi.z;
   const T theta = h * momentum * inverse_inertia;
   const SinCos<T> full = sin_cos(theta);
@@ -97,8 +99,8 @@ inline void rotate_about_body_axis(int axis, const T& h, const T& inverse_inerti
 // The free rotation over h (DLM's symmetric splitting), then q renormalised: the rotations
 // keep it unit to rounding, and renormalising stops that rounding from accumulating.
 template <class T>
-inline void free_rotation(const T& h, const T& inverse_transverse, const T& inverse_axial, Quaternion<T>& q,
-                          Vector3<T>& pi) {
+CASKDEM_HOST_DEVICE inline void free_rotation(const T& h, const T& inverse_transverse, const T& inverse_axial,
+                                              Quaternion<T>& q, Vector3<T>& pi) {
   const T half = h * lane::broadcast<T>(0.5);
   rotate_about_body_axis(0, half, inverse_transverse, q, pi);
   rotate_about_body_axis(2, half, inverse_transverse, q, pi);

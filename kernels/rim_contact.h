@@ -34,6 +34,7 @@
 // not by the rim, and a drilling friction over it would stop a rolling cask within a turn
 // (measured with a spring-slider at every node: the tilt fell by 40 % in the first turn).
 
+#include "kernels/host_device.h"
 #include "kernels/lane.h"
 #include "kernels/model3d.h"
 
@@ -54,7 +55,7 @@ struct RimNode {
 
 // centre_gap: g_c; slope_x, slope_z: R_c e1_y and R_c e3_y.
 template <class T>
-inline RimArc<T> touching_arc(const T& centre_gap, const T& slope_x, const T& slope_z) {
+CASKDEM_HOST_DEVICE inline RimArc<T> touching_arc(const T& centre_gap, const T& slope_x, const T& slope_z) {
   using lane::broadcast;
   using lane::select;
   const T zero = broadcast<T>(0.0), one = broadcast<T>(1.0), half = broadcast<T>(0.5);
@@ -72,8 +73,8 @@ inline RimArc<T> touching_arc(const T& centre_gap, const T& slope_x, const T& sl
 
 // The node pair of abscissa `pair` (the nodes at +psi and -psi of Gauss node u = U a).
 template <class T>
-inline void rim_node_pair(const Contacts3D& contacts, const RimArc<T>& arc, int pair, RimNode<T>& ahead,
-                          RimNode<T>& behind) {
+CASKDEM_HOST_DEVICE inline void rim_node_pair(const Contacts3D& contacts, const RimArc<T>& arc, int pair,
+                                              RimNode<T>& ahead, RimNode<T>& behind) {
   using lane::broadcast;
   const T one = broadcast<T>(1.0), two = broadcast<T>(2.0);
   const T u = arc.half_width * broadcast<T>(contacts.node_abscissa[pair]);

@@ -18,6 +18,7 @@
 
 #include "kernels/contact_law.h"
 #include "kernels/end_criteria.h"
+#include "kernels/host_device.h"
 #include "kernels/lane.h"
 #include "kernels/lane_state.h"
 #include "kernels/model.h"
@@ -26,9 +27,10 @@
 namespace caskdem::kernels {
 
 template <FrictionLaw Law, class T>
-inline void step(const Model& model, const LaneParameters<T>& p, const T& table_horizontal, const T& table_vertical,
-                 const T& time, BodyState<T>& body, CornerState<T>* corners, Response<T>& response,
-                 ContactForces<T>* forces = nullptr) {
+CASKDEM_HOST_DEVICE inline void step(const Model& model, const LaneParameters<T>& p, const T& table_horizontal,
+                                     const T& table_vertical, const T& time, BodyState<T>& body,
+                                     CornerState<T>* corners, Response<T>& response,
+                                     ContactForces<T>* forces = nullptr) {
   using lane::broadcast;
   using lane::select;
   const T zero = broadcast<T>(0.0);
@@ -147,8 +149,8 @@ inline void step(const Model& model, const LaneParameters<T>& p, const T& table_
 // and the end time of lanes still running. A stopped lane's state is the one it stopped in;
 // a non-finite lane reports zeros there (its status says why).
 template <class T>
-inline void finish(const Model& model, const LaneParameters<T>& p, const BodyState<T>& body, double end_time,
-                   Response<T>& response) {
+CASKDEM_HOST_DEVICE inline void finish(const Model& model, const LaneParameters<T>& p, const BodyState<T>& body,
+                                       double end_time, Response<T>& response) {
   using lane::broadcast;
   using lane::select;
   const SinCos<T> rotation = sin_cos(body.theta);

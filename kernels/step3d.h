@@ -27,6 +27,7 @@
 #include "kernels/contact_law.h"
 #include "kernels/end_criteria.h"
 #include "kernels/friction_law.h"
+#include "kernels/host_device.h"
 #include "kernels/lane.h"
 #include "kernels/lane_state.h"
 #include "kernels/lane_state3d.h"
@@ -40,7 +41,7 @@ namespace caskdem::kernels {
 // |e - e_y|^2 of the cask's axis e = R e_y: grows monotonically with the tilt t from vertical,
 // (2 sin(t/2))^2, and is exact near upright (1 - e_y from the quaternion, not by cancellation).
 template <class T>
-inline T axis_departure(const Quaternion<T>& q, const Rotation<T>& rotation) {
+CASKDEM_HOST_DEVICE inline T axis_departure(const Quaternion<T>& q, const Rotation<T>& rotation) {
   const T drop = lane::broadcast<T>(2.0) * (q.x * q.x + q.z * q.z);  // 1 - e_y
   return rotation.r01 * rotation.r01 + drop * drop + rotation.r21 * rotation.r21;
 }
@@ -54,8 +55,8 @@ struct RimTouch {
 };
 
 template <class T>
-inline RimTouch<T> rim_touch(const Contacts3D& contacts, const LaneParameters<T>& p, const Rotation<T>& rotation,
-                             const T& height) {
+CASKDEM_HOST_DEVICE inline RimTouch<T> rim_touch(const Contacts3D& contacts, const LaneParameters<T>& p,
+                                                 const Rotation<T>& rotation, const T& height) {
   const T radius = lane::broadcast<T>(contacts.rounding_radius), ring = lane::broadcast<T>(contacts.ring_radius);
   const T centre_gap = height + rotation.apply({-p.centre_x, radius - p.centre_y, lane::broadcast<T>(0.0)}).y - radius;
   const T slope_x = ring * rotation.r10, slope_z = ring * rotation.r12;
@@ -65,8 +66,8 @@ inline RimTouch<T> rim_touch(const Contacts3D& contacts, const LaneParameters<T>
 // The rim's nodes on its touching arc in mirror pairs, each with its body-frame sphere centre
 // (x, r, z) and stiffnesses: visit(x, z, K_n, K_s).
 template <class T, class Visit>
-inline void for_each_rim_node(const Contacts3D& contacts, const LaneParameters<T>& p, const RimTouch<T>& rim,
-                              Visit&& visit) {
+CASKDEM_HOST_DEVICE inline void for_each_rim_node(const Contacts3D& contacts, const LaneParameters<T>& p,
+                                                  const RimTouch<T>& rim, Visit&& visit) {
   using lane::broadcast;
   const T ring = broadcast<T>(contacts.ring_radius);
   const T ring_normal = broadcast<T>(contacts.ring_normal_stiffness) * p.stiffness_scale;
@@ -88,9 +89,10 @@ inline void for_each_rim_node(const Contacts3D& contacts, const LaneParameters<T
 // K_s / K_s(previous) when that is below 1), and springs that join it come unstretched (the
 // force kept). The centre's K_s is constant, and its force is kept as in 2D.
 template <FrictionLaw Law, class T, class Mask>
-inline Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p, const Mask& touching, const Mask& active,
-                                const T& normal, const T& shear_stiffness, const T& slip_x, const T& slip_z,
-                                ContactState3D<T>& state) {
+CASKDEM_HOST_DEVICE inline Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p,
+                                                    const Mask& touching, const Mask& active, const T& normal,
+                                                    const T& shear_stiffness, const T& slip_x, const T& slip_z,
+                                                    ContactState3D<T>& state) {
   using lane::broadcast;
   using lane::select;
   const T zero = broadcast<T>(0.0), one = broadcast<T>(1.0);
@@ -137,9 +139,9 @@ inline Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p, 
 }
 
 template <FrictionLaw Law, class T>
-inline void step3d(const Model& model, const Contacts3D& contacts, const LaneParameters<T>& p, const T& table_x,
-                   const T& table_vertical, const T& table_z, const T& time, BodyState3D<T>& body,
-                   ContactState3D<T>* points, Response3D<T>& response) {
+CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& contacts, const LaneParameters<T>& p,
+                                       const T& table_x, const T& table_vertical, const T& table_z, const T& time,
+                                       BodyState3D<T>& body, ContactState3D<T>* points, Response3D<T>& response) {
   using lane::broadcast;
   using lane::select;
   const T zero = broadcast<T>(0.0);

@@ -11,6 +11,7 @@
 #include "commands/validators.h"
 #include "core/error.h"
 #include "core/units.h"
+#include "ensemble/device_runner.h"
 #include "ensemble/execute.h"
 #ifdef CASKDEM_WITH_MPI
 #include "ensemble/distributed.h"
@@ -28,7 +29,7 @@ namespace caskdem::commands {
 namespace {
 
 struct EnsembleOptions {
-  std::string file, out, isa = "automatic";
+  std::string file, out, isa = "automatic", device;  // device empty: the ensemble file's [run] device
   int threads = 0;
   bool resume = false, no_plot = false, quiet = false;
 };
@@ -55,6 +56,18 @@ void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const
   if (options.resume && !std::filesystem::exists(out)) {
     throw InputError(out.string() + ": no such file to resume (run without --resume first)");
   }
+  // Where the realisations run: --device, else the file's [run] device, else auto.
+  const std::string device_text = options.device.empty() ? spec.device : options.device;
+  const std::string device_source =
+      options.device.empty()
+          ? (spec.device_line > 0 ? located(spec.file, spec.device_line, "[run] device") : "--device auto")
+          : "--device " + options.device;
+  int preferred_device = 0;
+#ifdef CASKDEM_WITH_MPI
+  if (mpi) preferred_device = mpi->local_rank();
+#endif
+  const std::unique_ptr<LaneDevice> device =
+      open_device(parse_device_kind(device_text), preferred_device, device_source);
   const EnsemblePlan plan(spec, isa);
   if (root) {
     std::cout << "ensemble        " << spec.title << "\n";
@@ -63,6 +76,15 @@ void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const
               << spec.levels.size() << " stripes x " << spec.realisations_per_stripe << ", " << plan.motion_count()
               << " motions)\n";
     std::cout << "time step       " << plan.model().time_step << " s, alpha " << plan.stability_angle() << " rad\n";
+    if (device) {
+      const std::int64_t lanes =
+          std::min<std::int64_t>(plan.size(), device->lane_capacity(plan.three_d() ? 3 : 2, plan.model().friction_law));
+      std::cout << "device          GPU " << device->name() << ", " << lanes << " lanes (one realisation per thread)\n";
+    } else {
+      std::cout << "device          CPU, "
+                << instruction_set_name(isa == InstructionSet::automatic ? best_instruction_set() : isa) << ", "
+                << (options.threads > 0 ? options.threads : omp_get_max_threads()) << " threads\n";
+    }
 #ifdef CASKDEM_WITH_MPI
     if (mpi) std::cout << "MPI             " << mpi->size() << " ranks\n";
 #endif
@@ -74,6 +96,7 @@ void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const
   execute.resume = options.resume;
   execute.progress = !options.quiet;
   execute.output = out;
+  execute.device = device.get();
 #ifdef CASKDEM_WITH_MPI
   const ExecuteReport report = mpi ? execute_ensemble_distributed(plan, execute, *mpi) : execute_ensemble(plan, execute);
 #else
@@ -121,7 +144,11 @@ void add_ensemble(CLI::App& app) {
   cmd->add_option("--out", options->out, "Result file (HDF5; default results/<name>.h5)");
   cmd->add_flag("--resume", options->resume, "Continue an interrupted run from its result file");
   cmd->add_option("--threads", options->threads, "OpenMP threads (default: all cores)")->check(thread_count());
-  cmd->add_option("--isa", options->isa, "Instruction set: automatic, avx512f, avx2, sse2 or scalar");
+  cmd->add_option("--isa", options->isa, "Instruction set of the CPU engine: automatic, avx512f, avx2, sse2 or scalar");
+  cmd->add_option("--device", options->device,
+                  "Where the realisations run: auto (a GPU when one is present), cpu or cuda (default: the "
+                  "ensemble file's [run] device, else auto)")
+      ->check(CLI::IsMember({"auto", "cpu", "cuda"}));
   cmd->add_flag("--no-plot", options->no_plot, "Do not make the PNG");
   cmd->add_flag("--quiet", options->quiet, "No progress output");
   cmd->callback([options]() {

@@ -5,7 +5,10 @@
 #include <algorithm>
 #include <cstdio>
 #include <cstdlib>
+#include <optional>
 
+#include "core/error.h"
+#include "ensemble/device_runner.h"
 #include "ensemble/progress.h"
 #include "ensemble/runner.h"
 
@@ -50,6 +53,10 @@ MpiSession::MpiSession(int* argc, char*** argv) {
   MPI_Init_thread(argc, argv, MPI_THREAD_SERIALIZED, &provided);
   MPI_Comm_rank(MPI_COMM_WORLD, &rank_);
   MPI_Comm_size(MPI_COMM_WORLD, &size_);
+  MPI_Comm node;
+  MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, rank_, MPI_INFO_NULL, &node);
+  MPI_Comm_rank(node, &local_rank_);
+  MPI_Comm_free(&node);
 }
 
 MpiSession::~MpiSession() { MPI_Finalize(); }
@@ -82,15 +89,29 @@ ExecuteReport execute_ensemble_distributed(const EnsemblePlan& plan, const Execu
   const std::int64_t last = total * (mpi.rank() + 1) / mpi.size();
   std::vector<std::int64_t> mine(pending.begin() + first, pending.begin() + last);
   std::sort(mine.begin(), mine.end());
-  const MotionTables tables(plan);
+  const MotionTables tables(plan,
+                            options.device ? MotionTables::kDeviceBudgetBytes : MotionTables::kDefaultBudgetBytes);
   RunOptions run;
   run.isa = options.isa;
   run.threads = file.run().threads;
   run.lanes = plan.spec().block_lanes;
-
+  std::optional<DeviceLanes> device_lanes;
   // Rounds of a few blocks' worth of realisations per thread: enough work between gathers to
-  // keep every thread busy, often enough for progress and checkpoints.
-  const std::size_t per_round = std::size_t(4) * file.run().threads * plan.spec().block_lanes;
+  // keep every thread busy, often enough for progress and checkpoints. A GPU's rounds fill its
+  // lanes several times over, so that few lanes wait while a round drains.
+  std::size_t per_round = std::size_t(4) * file.run().threads * plan.spec().block_lanes;
+  try {
+    if (options.device) {
+      device_lanes.emplace(plan, device_tables(plan, tables), *options.device);
+      run.device = &*device_lanes;
+      per_round = std::size_t(8) * static_cast<std::size_t>(device_lanes->lane_capacity());
+      if (root) file.set_device_lanes(device_lanes->lane_capacity());
+    }
+  } catch (const InputError&) {
+    throw;  // every rank's tables are the same: every rank fails alike, and rank 0 says why
+  } catch (const std::exception& e) {
+    mpi.abort(e.what());  // this rank's GPU alone: the others would wait for it for ever
+  }
   int rounds = static_cast<int>((mine.size() + per_round - 1) / per_round);
   MPI_Allreduce(MPI_IN_PLACE, &rounds, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
 

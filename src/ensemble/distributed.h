@@ -2,8 +2,9 @@
 // Ensembles across MPI ranks (Open MPI from Debian). `mpirun -n K caskdem ensemble ...`
 // splits the pending realisations into K contiguous slices (of the realisations taken
 // stripe by stripe in turn, so that every rank gets every intensity level); each rank runs
-// its slice on the threaded SIMD engine in rounds of blocks, and after each round rank 0
-// gathers the outcomes, reports progress for all ranks and checkpoints the one result file.
+// its slice on the threaded SIMD engine, or on one GPU of its node (its local rank's), in
+// rounds, and after each round rank 0 gathers the outcomes, reports progress for all ranks and
+// checkpoints the one result file.
 //
 // Rank 0 gathers rather than every rank writing hyperslabs with parallel HDF5: an outcome is
 // 9 doubles (72 bytes) and costs seconds of computing, so the traffic is negligible; a single
@@ -31,11 +32,13 @@ class MpiSession {
   MpiSession& operator=(const MpiSession&) = delete;
   int rank() const { return rank_; }
   int size() const { return size_; }
+  int local_rank() const { return local_rank_; }  // among the ranks on this node: which of its GPUs to take
   [[noreturn]] void abort(const std::string& message) const;
 
  private:
   int rank_ = 0;
   int size_ = 1;
+  int local_rank_ = 0;
 };
 
 // Runs the ensemble over all ranks; the report (and the file) are complete on rank 0.

@@ -135,7 +135,7 @@ const KeySchema& ensemble_file_keys() {
     s.push_back({"sampling", {"method", "seed", "epistemic_points"}});
     s.push_back({"limit_states", {"tip_over", "rotation_ratio", "sliding"}});
     s.push_back({"fragility", {"bootstrap", "confidence"}});
-    s.push_back({"run", {"block_lanes", "checkpoint_interval"}});
+    s.push_back({"run", {"block_lanes", "checkpoint_interval", "device"}});
     return s;
   }();
   return schema;
@@ -386,6 +386,8 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
     if (lanes < 1 || lanes > 4096) t.fail("block_lanes", "expected 1 to 4096");
     e.block_lanes = static_cast<int>(lanes);
     e.checkpoint_interval = t.positive("checkpoint_interval", t.quantity_or("checkpoint_interval", Dimension::time, 10.0));
+    e.device = t.choice("device", {"auto", "cpu", "cuda"}, "auto");
+    e.device_line = t.line_of("device");
     t.reject_unknown_keys();
   }
   if (root.has("motion")) root.fail("motion", "an ensemble lists its motions as [[motions]] tables");

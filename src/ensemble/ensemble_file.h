@@ -74,6 +74,8 @@ struct EnsembleSpec {
   double confidence = 0.95;
   int block_lanes = 64;
   double checkpoint_interval = 10.0;  // s of wall time between checkpoints
+  std::string device = "auto";        // auto, cpu or cuda: where the realisations run (--device overrides)
+  long device_line = 0;               // its line in the file (0: not given)
 
   bool three_d() const { return base.cask.dimensions == 3; }
   int outer_count() const { return epistemic.empty() ? 1 : epistemic_points; }

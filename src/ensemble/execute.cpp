@@ -1,8 +1,12 @@
 #include "ensemble/execute.h"
 
-
 #include <omp.h>
 
+#include <algorithm>
+#include <optional>
+
+#include "core/error.h"
+#include "ensemble/device_runner.h"
 #include "ensemble/progress.h"
 #include "ensemble/runner.h"
 
@@ -15,7 +19,14 @@ ResultFile::ResultFile(const EnsemblePlan& plan, const ExecuteOptions& options)
   run_.instruction_set =
       instruction_set_name(options.isa == InstructionSet::automatic ? best_instruction_set() : options.isa);
   run_.threads = options.threads > 0 ? options.threads : omp_get_max_threads();
+  if (options.device) {
+    run_.device = options.device->name();
+    run_.instruction_set = "cuda";
+    run_.threads = 0;  // set by the run (set_device_lanes)
+  }
 }
+
+void ResultFile::set_device_lanes(std::int64_t lanes) { run_.threads = static_cast<int>(lanes); }
 
 double ResultFile::elapsed() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
@@ -37,18 +48,38 @@ void ResultFile::finish(ExecuteReport& report) {
   report.wall_seconds = run_.wall_seconds;
 }
 
+const MotionTables& device_tables(const EnsemblePlan& plan, const MotionTables& tables) {
+  if (!tables.whole()) {
+    std::int64_t steps = 0;
+    for (int m = 0; m < plan.motion_count(); ++m) steps += tables.steps(m);
+    throw InputError(located(plan.spec().file, 0,
+                             "the GPU engine holds every motion's whole run on the device, and these motions' " +
+                                 std::to_string(steps) + " steps of table exceed its " +
+                                 std::to_string(MotionTables::kDeviceBudgetBytes >> 30) +
+                                 " GiB; expected fewer or shorter motions, a longer time step, or --device cpu"));
+  }
+  return tables;
+}
+
 ExecuteReport execute_ensemble(const EnsemblePlan& plan, const ExecuteOptions& options) {
   ResultFile file(plan, options);
   EnsembleResults& results = file.results();
   // The file exists, valid and resumable, from the first moment.
   file.write(nullptr);
 
-  const MotionTables tables(plan);
+  const MotionTables tables(plan,
+                            options.device ? MotionTables::kDeviceBudgetBytes : MotionTables::kDefaultBudgetBytes);
   RunOptions run;
   run.isa = options.isa;
   run.threads = file.run().threads;
   run.lanes = plan.spec().block_lanes;
   run.refill = options.refill;
+  std::optional<DeviceLanes> device_lanes;
+  if (options.device) {
+    device_lanes.emplace(plan, device_tables(plan, tables), *options.device);
+    run.device = &*device_lanes;
+    file.set_device_lanes(std::min<std::int64_t>(device_lanes->lane_capacity(), results.size));
+  }
   Progress progress(results.size, results.completed_count(), options.progress);
   std::int64_t done = results.completed_count();
   ExecuteReport report;

@@ -1,7 +1,7 @@
 #pragma once
 // Running a whole ensemble on this machine: resume from a checkpoint if asked, run the
-// pending realisations on the threaded SIMD engine, checkpoint the file every few seconds,
-// and finish with the fragility analysis.
+// pending realisations on the threaded SIMD engine or a GPU (ensemble/device_runner.h),
+// checkpoint the file every few seconds, and finish with the fragility analysis.
 
 #include <chrono>
 #include <filesystem>
@@ -11,6 +11,7 @@
 #include "ensemble/plan.h"
 #include "ensemble/results.h"
 #include "ensemble/runner.h"
+#include "kernels/lane_device.h"
 
 namespace caskdem {
 
@@ -21,6 +22,7 @@ struct ExecuteOptions {
   bool progress = true;
   bool refill = true;  // false: lockstep blocks (the same results; for measuring what refilling saves)
   std::filesystem::path output;
+  LaneDevice* device = nullptr;  // a GPU (open_device), or null: the CPU's SIMD engine
 };
 
 struct ExecuteReport {
@@ -31,6 +33,10 @@ struct ExecuteReport {
 };
 
 ExecuteReport execute_ensemble(const EnsemblePlan& plan, const ExecuteOptions& options);
+
+// The motions' tables for the GPU engine, which has no lockstep fallback: an InputError naming
+// the ensemble file when they did not fit their budget.
+const MotionTables& device_tables(const EnsemblePlan& plan, const MotionTables& tables);
 
 // What an execution keeps beside its result file, on one process or on each MPI rank: the
 // results so far (fresh, or read back from the file with --resume), how the run is made, and
@@ -49,6 +55,8 @@ class ResultFile {
   void checkpoint_if_due();
   // The run is complete: the fragility analysis into the report and the file, and the wall time.
   void finish(ExecuteReport& report);
+  // A GPU run's lanes (one realisation per thread), for the file's `threads`.
+  void set_device_lanes(std::int64_t lanes);
 
  private:
   const EnsemblePlan& plan_;

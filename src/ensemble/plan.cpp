@@ -239,7 +239,7 @@ RealisationInput EnsemblePlan::realisation(std::int64_t index) const {
   const std::int64_t inner = index % spec_.realisations_per_outer_point();
   in.stripe = static_cast<int>(inner / n);
   const std::int64_t position = inner % n;
-  in.motion = static_cast<int>(position % motion_count());
+  in.motion = motion_of(index);
   in.level = spec_.levels[in.stripe];
   in.scale_factor = in.level / intensity_of(in.motion, 1.0);
   in.parameters = nominal_;

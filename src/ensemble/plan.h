@@ -92,6 +92,11 @@ class EnsemblePlan {
 
   RealisationInput realisation(std::int64_t index) const;
   int outer_of(std::int64_t index) const { return static_cast<int>(index / spec_.realisations_per_outer_point()); }
+  // realisation(index).motion, without sampling its parameters.
+  int motion_of(std::int64_t index) const {
+    const std::int64_t position = index % spec_.realisations_per_outer_point() % spec_.realisations_per_stripe;
+    return static_cast<int>(position % motion_count());
+  }
   // The motion's intensity (of the scaled motion as applied) for a given scale factor.
   double intensity_of(int motion, double scale_factor) const;
 

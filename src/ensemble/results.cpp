@@ -132,6 +132,7 @@ std::vector<char> result_image(const std::filesystem::path& file, const Ensemble
     root.attribute("ensemble_toml", spec.toml_text);
     root.attribute("title", spec.title);
     root.attribute("wall_time_s", run.wall_seconds);
+    root.attribute("device", run.device);
     root.attribute("instruction_set", run.instruction_set);
     root.attribute("threads", std::int64_t(run.threads));
     root.attribute("realisations", results.size);

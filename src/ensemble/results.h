@@ -49,8 +49,9 @@ struct LimitStateSummary;  // ensemble/analysis.h
 
 struct RunInformation {
   double wall_seconds = 0.0;       // this run's, added to the checkpoint's on resume
-  std::string instruction_set;
-  int threads = 0;
+  std::string device = "cpu";      // "cpu", or the GPU's name
+  std::string instruction_set;     // the CPU engine's, or "cuda"
+  int threads = 0;                 // OpenMP threads, or the GPU's lanes (one realisation per thread)
 };
 
 // Writes the whole file atomically (temporary file, then rename).

@@ -1,16 +1,16 @@
 #include "ensemble/runner.h"
 
+#include <omp.h>
+
 #include <algorithm>
 #include <atomic>
 #include <cmath>
 #include <exception>
 #include <mutex>
 
-#include <omp.h>
-
+#include "ensemble/device_runner.h"
+#include "ensemble/lane_io.h"
 #include "kernels/block3d.h"
-#include "kernels/step.h"
-#include "sim/simulate3d.h"
 
 namespace caskdem {
 
@@ -58,14 +58,12 @@ class Lanes2D : public Holdings {
   bool running(int lane) const { return holds(lane) && block_.status(lane) == 0.0; }
 
   void load(int lane, std::int64_t index, std::int64_t table_index) {
-    const Model& model = plan_.model();
-    const RealisationInput in = plan_.realisation(index);
-    parameters_[lane] = lane_parameters(model, in.parameters);
-    const BodyState<double> body = rest_state(model, parameters_[lane]);
+    const LaneStart start = lane_start(plan_, index);
+    parameters_[lane] = start.parameters;
     const CornerState<double> corners[kMaxCorners] = {};
-    block_.set_lane(lane, parameters_[lane], body, corners, initial_response(parameters_[lane], body));
+    block_.set_lane(lane, start.parameters, start.body, corners, start.response);
     block_.set_clock(lane, 0.0, table_index);
-    hold(lane, index, in.motion);
+    hold(lane, index, start.motion);
   }
 
   // Nothing left to load: the lane keeps its last realisation's numbers (lane 0's if it never
@@ -83,21 +81,10 @@ class Lanes2D : public Holdings {
 
   // The lane's result: its frozen state if it stopped, else its state at the end of its run.
   RealisationOutcome harvest(int lane, std::int64_t steps) {
-    const Model& model = plan_.model();
     BodyState<double> body;
     Response<double> response;
     block_.get_lane(lane, nullptr, &body, nullptr, &response);
-    kernels::finish(model, parameters_[lane], body, static_cast<double>(steps) * model.time_step, response);
-    RealisationOutcome o;
-    o.status = static_cast<LaneStatus>(static_cast<int>(response.status));
-    o.max_abs_rotation = response.max_abs_rotation;
-    o.max_abs_slide = response.max_abs_slide;
-    o.residual_slide = response.final_slide;
-    o.max_uplift = response.max_uplift;
-    o.impacts = response.impacts;
-    o.end_time = response.end_time;
-    o.instability_time = o.status == LaneStatus::tipped_over ? response.instability_time : -1.0;
-    return o;
+    return lane_outcome(plan_, parameters_[lane], body, response, steps);
   }
 
   void advance(InstructionSet isa, const MotionTables::Components& table, std::int64_t first_step, int steps) {
@@ -119,14 +106,12 @@ class Lanes3D : public Holdings {
   bool running(int lane) const { return holds(lane) && block_.status(lane) == 0.0; }
 
   void load(int lane, std::int64_t index, std::int64_t table_index) {
-    const Model3D& model = plan_.model3d();
-    const RealisationInput in = plan_.realisation(index);
-    parameters_[lane] = lane_parameters3d(model, in.parameters);
-    const BodyState3D<double> body = rest_state3d(model, parameters_[lane]);
+    const LaneStart3D start = lane_start3d(plan_, index);
+    parameters_[lane] = start.parameters;
     const ContactState3D<double> free[kContactSliders3D] = {};
-    block_.set_lane(lane, parameters_[lane], body, free, initial_response3d(parameters_[lane], body), in.incidence);
+    block_.set_lane(lane, start.parameters, start.body, free, start.response, start.incidence);
     block_.set_clock(lane, 0.0, table_index);
-    hold(lane, index, in.motion);
+    hold(lane, index, start.motion);
   }
 
   void empty(int lane) {
@@ -134,24 +119,11 @@ class Lanes3D : public Holdings {
     release(lane);
   }
 
-  // As the deterministic run sums it up (sim/simulate3d.h); the lanes count no impacts (-1).
   RealisationOutcome harvest(int lane, std::int64_t steps) {
     BodyState3D<double> body;
     Response3D<double> response;
     block_.get_lane(lane, &body, nullptr, &response);
-    const RunSummary3D s =
-        summarise3d(plan_.model3d(), parameters_[lane], body, response, static_cast<double>(steps) * plan_.model().time_step);
-    RealisationOutcome o;
-    o.status = s.status;
-    o.max_abs_rotation = s.max_tilt;
-    o.max_abs_slide = s.max_slide;
-    o.residual_slide = s.residual_slide;
-    o.max_uplift = s.max_uplift;
-    o.impacts = -1.0;
-    o.end_time = s.end_time;
-    o.instability_time = s.instability_time;
-    o.spin = s.spin;
-    return o;
+    return lane_outcome3d(plan_, parameters_[lane], body, response, steps);
   }
 
   void advance(InstructionSet isa, const MotionTables::Components& table, std::int64_t first_step, int steps) {
@@ -321,6 +293,7 @@ MotionTables::MotionTables(const EnsemblePlan& plan, std::int64_t budget_bytes) 
     total += steps_.back();
     for (int c = 0; c < 3; ++c) present[c] = present[c] || plan.component(m, c);
   }
+  length_ = total;
   const int components = int(present[0]) + int(present[1]) + int(present[2]);
   if (double(total) * components * sizeof(double) > double(budget_bytes)) return;
   for (int c = 0; c < 3; ++c) {
@@ -340,6 +313,10 @@ MotionTables::MotionTables(const EnsemblePlan& plan, std::int64_t budget_bytes) 
 
 void run_realisations(const EnsemblePlan& plan, const MotionTables& tables, const std::vector<std::int64_t>& realisations,
                       const RunOptions& options, const OutcomeSink& on_done, LaneOccupancy* occupancy) {
+  if (options.device) {
+    options.device->run(realisations, on_done, occupancy);
+    return;
+  }
   Shared shared(plan, tables, options, on_done);
   if (options.refill && tables.whole()) {
 #pragma omp parallel num_threads(options.threads)

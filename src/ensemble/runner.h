@@ -42,22 +42,31 @@ class MotionTables {
  public:
   using Components = std::array<const double*, 3>;  // H1, H2, vertical; null where absent
   static constexpr std::int64_t kDefaultBudgetBytes = std::int64_t(1) << 29;  // 512 MiB
+  // The GPU engine has no lockstep fallback: it takes every motion whole, up to 4 GiB.
+  static constexpr std::int64_t kDeviceBudgetBytes = std::int64_t(1) << 32;
   explicit MotionTables(const EnsemblePlan& plan, std::int64_t budget_bytes = kDefaultBudgetBytes);
   bool whole() const { return !table_[0].empty(); }
+  std::int64_t length() const { return length_; }  // steps of all motions together
   const double* data(int component = 0) const { return table_[component].empty() ? nullptr : table_[component].data(); }
   std::int64_t offset(int motion) const { return offset_[motion]; }
   std::int64_t steps(int motion) const { return steps_[motion]; }
 
  private:
   std::vector<std::int64_t> offset_, steps_;
+  std::int64_t length_ = 0;
   std::vector<double> table_[3];
 };
+
+class DeviceLanes;  // ensemble/device_runner.h
 
 struct RunOptions {
   InstructionSet isa = InstructionSet::automatic;
   int threads = 1;
   int lanes = 64;       // per block
   bool refill = true;   // false: blocks of one motion in lockstep (the results are the same)
+  // Run on this GPU (or the host in its place) instead of the CPU's SIMD blocks: the same
+  // results; isa, threads, lanes and refill are then the CPU's and unused.
+  DeviceLanes* device = nullptr;
 };
 
 // Lane-steps the kernel was asked to advance, and those of them on lanes that had already
