@@ -63,6 +63,10 @@ struct CudaDeviceInfo {
   int compute_major = 0, compute_minor = 0;
   int multiprocessors = 0;
   std::int64_t memory_bytes = 0;
+  double clock_hz = 0.0;             // the multiprocessors' peak clock
+  int fp64_per_clock_per_multiprocessor = 0;  // double-precision operations each issues a cycle
+  // Peak double-precision rate, flop/s, counting a fused multiply-add as two (as datasheets do).
+  double fp64_peak() const { return 2.0 * fp64_per_clock_per_multiprocessor * multiprocessors * clock_hz; }
 };
 bool cuda_compiled();
 // The CUDA devices this process sees; empty with the reason in *why_none when there are none

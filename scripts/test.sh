@@ -5,7 +5,12 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCASKDEM_BUILD_TESTS=ON -DCASKDEM_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build build -j"$(nproc)"
-ctest --test-dir build --output-on-failure --no-tests=error -j"$(nproc)"
+ctest --test-dir build --output-on-failure --no-tests=error -j"$(nproc)" -LE gpu
+# The GPU engine against the CPU, verbose: where no GPU is present each test says why it did not
+# run; where one is, the table of every shipped ensemble's realisations (docs/performance.md).
+ctest --test-dir build --output-on-failure --no-tests=error -L gpu -V >build/gpu-tests.log 2>&1 ||
+  { cat build/gpu-tests.log; exit 1; }
+grep -E "Skipped|no GPU|GPU:|identical|\.toml|tests passed|Test #" build/gpu-tests.log || true
 # Every reader under libFuzzer with the address and undefined-behaviour sanitizers, 10 s per
 # target (bench/fuzz.sh; docs/fuzzing.md has the long runs).
 TIMEOUT=10 bench/fuzz.sh build-fuzz build-fuzz/smoke 1000000 10

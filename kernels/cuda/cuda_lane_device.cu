@@ -249,8 +249,16 @@ std::vector<CudaDeviceInfo> cuda_devices(std::string* why_none) {
                  ", this build runs on 9.0 (Hopper) and later";
       continue;
     }
-    devices.push_back({ordinal, properties.name, properties.major, properties.minor, properties.multiProcessorCount,
-                       static_cast<std::int64_t>(properties.totalGlobalMem)});
+    CudaDeviceInfo info{ordinal, properties.name, properties.major, properties.minor, properties.multiProcessorCount,
+                        static_cast<std::int64_t>(properties.totalGlobalMem)};
+    int clock_khz = 0, fp32_to_fp64 = 0;
+    cudaDeviceGetAttribute(&clock_khz, cudaDevAttrClockRate, ordinal);
+    cudaDeviceGetAttribute(&fp32_to_fp64, cudaDevAttrSingleToDoublePrecisionPerfRatio, ordinal);
+    info.clock_hz = 1e3 * clock_khz;
+    // 128 single-precision lanes a multiprocessor since Volta; the ratio gives the double ones
+    // (64 on the H100 and H200, 2 on gaming cards).
+    info.fp64_per_clock_per_multiprocessor = fp32_to_fp64 > 0 ? 128 / fp32_to_fp64 : 0;
+    devices.push_back(info);
   }
   if (devices.empty() && why_none) *why_none = count == 0 ? "no CUDA device" : "no usable CUDA device: " + skipped;
   return devices;

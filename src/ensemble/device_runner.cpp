@@ -186,11 +186,15 @@ void DeviceLanes::run(const std::vector<std::int64_t>& realisations, const Outco
     }
     done += count;
 
+    const double busy = device_.busy_steps();
+    const double offered = double(shape.lanes) * steps;
+    const double idle = std::max(0.0, offered - (busy - busy_before));
+    statistics_.launches += 1;
+    statistics_.launch_seconds += seconds;
+    statistics_.busy_steps += busy - busy_before;
+    statistics_.lane_steps += offered;
+    busy_before = busy;
     if (occupancy) {
-      const double busy = device_.busy_steps();
-      const double offered = double(shape.lanes) * steps;
-      const double idle = std::max(0.0, offered - (busy - busy_before));
-      busy_before = busy;
       occupancy->lane_steps += offered;
       occupancy->stopped_lane_steps += idle;
       // Realisations still waited after the launch: its idle lanes could not take them.

@@ -59,11 +59,21 @@ class DeviceLanes {
   void run(const std::vector<std::int64_t>& realisations, const OutcomeSink& on_done,
            LaneOccupancy* occupancy = nullptr);
 
+  // What the runs so far cost on the device (bench/bench_device.cpp).
+  struct Statistics {
+    int launches = 0;
+    double launch_seconds = 0.0;  // in launches: the steps and the counters read back
+    double busy_steps = 0.0;      // realisation-steps advanced
+    double lane_steps = 0.0;      // lane-steps the launches offered
+  };
+  const Statistics& statistics() const { return statistics_; }
+
  private:
   const EnsemblePlan& plan_;
   const MotionTables& tables_;
   LaneDevice& device_;
   Tuning tuning_;
+  Statistics statistics_;
 };
 
 }  // namespace caskdem

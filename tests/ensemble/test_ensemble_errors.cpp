@@ -11,6 +11,8 @@
 #include "core/error.h"
 #include "ensemble/ensemble_file.h"
 #include "ensemble/plan.h"
+#include "kernels/lane_device.h"
+#include "support/command_line.h"
 #include "support/temporary_files.h"
 
 namespace caskdem {
@@ -143,6 +145,35 @@ TEST_F(EnsembleErrors, RestitutionOutOfTheCasksReach) {
   const std::string e = error_of(file);
   EXPECT_THAT(e, HasSubstr("key uncertain.restitution"));
   EXPECT_THAT(e, HasSubstr("reaches restitutions"));
+}
+
+// [run] device takes auto, cpu or cuda, named at its line otherwise.
+TEST_F(EnsembleErrors, UnknownDevice) {
+  const auto file = variant("device", "[uncertain.friction_static]", "[run]\ndevice = \"gpu\"\n\n[uncertain.friction_static]");
+  EXPECT_THAT(error_of(file), AllOf(HasSubstr(file.string() + ":"), HasSubstr("key run.device"),
+                                    HasSubstr("auto"), HasSubstr("cuda")));
+}
+
+// A GPU asked for on a machine or build without one: one line with the reason, exit status 2,
+// before any work; from the option and from the file's key alike. `auto` runs on the CPU.
+TEST_F(EnsembleErrors, CudaWithoutAGpuIsRefusedWithItsReason) {
+  std::string why;
+  if (!cuda_devices(&why).empty()) GTEST_SKIP() << "this machine has a GPU";
+  const auto small = variant("small", "realisations = 64", "realisations = 2");
+  const auto out = dir_ / "out.h5";
+  const testing::Outcome option =
+      testing::run_caskdem("ensemble " + small.string() + " --device cuda --no-plot --out " + out.string());
+  EXPECT_EQ(option.status, 2) << option.output;
+  EXPECT_THAT(option.output, HasSubstr("--device cuda: no GPU to run on: " + why + "; expected auto or cpu"));
+  EXPECT_FALSE(std::filesystem::exists(out));
+  const auto keyed = variant("keyed", "[uncertain.friction_static]", "[run]\ndevice = \"cuda\"\n\n[uncertain.friction_static]");
+  const testing::Outcome file = testing::run_caskdem("ensemble " + keyed.string() + " --no-plot --out " + out.string());
+  EXPECT_EQ(file.status, 2) << file.output;
+  EXPECT_THAT(file.output, AllOf(HasSubstr(keyed.string() + ":"), HasSubstr("[run] device: no GPU to run on")));
+  const testing::Outcome automatic =
+      testing::run_caskdem("ensemble " + small.string() + " --device auto --no-plot --quiet --out " + out.string());
+  EXPECT_EQ(automatic.status, 0) << automatic.output;
+  EXPECT_THAT(automatic.output, HasSubstr("device          CPU, "));
 }
 
 TEST_F(EnsembleErrors, UnknownParameter) {
