@@ -64,9 +64,6 @@ const MotionTables& device_tables(const EnsemblePlan& plan, const MotionTables& 
 ExecuteReport execute_ensemble(const EnsemblePlan& plan, const ExecuteOptions& options) {
   ResultFile file(plan, options);
   EnsembleResults& results = file.results();
-  // The file exists, valid and resumable, from the first moment.
-  file.write(nullptr);
-
   const MotionTables tables(plan,
                             options.device ? MotionTables::kDeviceBudgetBytes : MotionTables::kDefaultBudgetBytes);
   RunOptions run;
@@ -80,6 +77,8 @@ ExecuteReport execute_ensemble(const EnsemblePlan& plan, const ExecuteOptions& o
     run.device = &*device_lanes;
     file.set_device_lanes(std::min<std::int64_t>(device_lanes->lane_capacity(), results.size));
   }
+  // The file exists, valid and resumable, from the moment the run can start.
+  file.write(nullptr);
   Progress progress(results.size, results.completed_count(), options.progress);
   std::int64_t done = results.completed_count();
   ExecuteReport report;
