@@ -1,16 +1,34 @@
 #!/usr/bin/env bash
 # The README's second command: install the dependencies, build, and run the test suite.
+#
+#   scripts/test.sh          the suite (ctest), about 10 minutes on two cores: everything but the
+#                            full diagnoses at shipped settings (label diagnosis-full)
+#   scripts/test.sh --full   the full gate, as CI runs it (.ci/run), about 45 minutes on two
+#                            cores: the suite with the full diagnoses, every reader under
+#                            libFuzzer, the suite again under AddressSanitizer and
+#                            UndefinedBehaviorSanitizer, the ensemble tests under ThreadSanitizer
 set -euo pipefail
 cd "$(dirname "$0")/.."
+full=false
+case "${1:-}" in
+  "") ;;
+  --full) full=true ;;
+  *) echo "usage: scripts/test.sh [--full]" >&2; exit 2 ;;
+esac
 scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCASKDEM_BUILD_TESTS=ON -DCASKDEM_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build build -j"$(nproc)"
-ctest --test-dir build --output-on-failure --no-tests=error -j"$(nproc)" -LE gpu
+if $full; then
+  ctest --test-dir build --output-on-failure --no-tests=error -j"$(nproc)" -LE gpu
+else
+  ctest --test-dir build --output-on-failure --no-tests=error -j"$(nproc)" -LE 'gpu|diagnosis-full'
+fi
 # The GPU engine against the CPU, verbose: where no GPU is present each test says why it did not
 # run; where one is, the table of every shipped ensemble's realisations (docs/performance.md).
 ctest --test-dir build --output-on-failure --no-tests=error -L gpu -V >build/gpu-tests.log 2>&1 ||
   { cat build/gpu-tests.log; exit 1; }
 grep -E "Skipped|no GPU|GPU:|identical|\.toml|tests passed|Test #" build/gpu-tests.log || true
+$full || exit 0
 # Every reader under libFuzzer with the address and undefined-behaviour sanitizers, 10 s per
 # target (bench/fuzz.sh; docs/fuzzing.md has the long runs).
 TIMEOUT=10 bench/fuzz.sh build-fuzz build-fuzz/smoke 1000000 10
