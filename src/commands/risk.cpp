@@ -289,7 +289,6 @@ void run_risk(const RiskOptions& o, bool beta_given, bool beta_r_given, bool bet
                         {"below_curve", mean.below_curve},
                         {"above_curve", mean.above_curve},
                         {"undetermined_above", mean.undetermined_above},
-                        {"quadrature_error", mean.error_estimate},
                         {"segment_annual_frequency", mean.segment_frequency}};
     if (design_basis > 0.0) j["hclpf_to_design_basis"] = r.hclpf_conservative / design_basis;
     report["limit_states"].push_back(j);

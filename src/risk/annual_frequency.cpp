@@ -6,7 +6,6 @@
 #include <stdexcept>
 
 #include <boost/math/distributions/normal.hpp>
-#include <boost/math/quadrature/gauss_kronrod.hpp>
 
 #include "core/text.h"
 
@@ -15,7 +14,6 @@ namespace caskdem::risk {
 namespace {
 
 constexpr double kCoverage = 0.01;          // the part beyond the curve allowed, of the answer
-constexpr double kRelativeTolerance = 1e-10;
 constexpr double kHclpfZ = 1.6448536269514722;     // Phi^-1(0.95)
 constexpr double kOnePercentZ = 2.3263478740408408;  // Phi^-1(0.99)
 
@@ -30,13 +28,6 @@ double log_normal_cdf(double z) {
   return -0.5 * z2 - std::log(-z) - 0.5 * std::log(2.0 * std::numbers::pi) + std::log1p(-1.0 / z2 + 3.0 / (z2 * z2) - 15.0 / (z2 * z2 * z2));
 }
 
-double integrate(const auto& f, double from, double to, double& error) {
-  double e = 0.0;
-  const double value = boost::math::quadrature::gauss_kronrod<double, 31>::integrate(f, from, to, 12, kRelativeTolerance, &e);
-  error += e;
-  return value;
-}
-
 // The hazard as power laws in x = ln a: on segment i (and continued beyond the ends),
 // H(x) = H_i exp(-k_i (x - x_i)).
 struct LogLogHazard {
@@ -49,28 +40,42 @@ struct LogLogHazard {
     for (std::size_t i = 0; i + 1 < x.size(); ++i) slope.push_back(-(log_h[i + 1] - log_h[i]) / (x[i + 1] - x[i]));
   }
   std::size_t last() const { return x.size() - 1; }
-  // ln |dH/dx| at x on the power law of segment i (i = last: the last segment continued);
-  // -infinity on a flat segment.
-  double log_density(std::size_t i, double at) const {
-    const double k = slope[std::min(i, slope.size() - 1)];
-    return k > 0.0 ? std::log(k) + log_h[i] - k * (at - x[i]) : -INFINITY;
+  // ln H at x on the power law of segment i (i = last: the last segment continued).
+  double log_hazard(std::size_t i, double at) const {
+    return log_h[i] - slope[std::min(i, slope.size() - 1)] * (at - x[i]);
   }
 };
 
-// F(x) |dH/dx| on segment i, its logarithms added so that neither factor overflows alone.
-double integrand(const LogLogHazard& h, std::size_t i, double x, double log_median, double beta) {
-  return std::exp(log_normal_cdf((x - log_median) / beta) + h.log_density(i, x));
-}
-
-// Continued below the first point down to where the fragility has no weight left.
-double lower_limit(const LogLogHazard& h, double log_median, double beta) {
-  return std::min(h.x.front(), log_median - (12.0 + h.slope.front() * beta) * beta);
-}
-
-double part_below(const LogLogHazard& h, double log_median, double beta, double down_to_x, double& error) {
-  const auto f = [&](double x) { return integrand(h, 0, x, log_median, beta); };
-  const double from = lower_limit(h, log_median, beta);
-  return down_to_x > from ? integrate(f, from, down_to_x, error) : 0.0;
+// The integral of F(x) |dH/dx| over [a, b] on the power law of segment i, in closed form. With
+// u = (x - m) / beta, v = u + k beta and G = H_i exp(-k (m - x_i) + k^2 beta^2 / 2) (G phi(v) =
+// H phi(u), so d/dx [G Phi(v)] = H phi(u) / beta), integration by parts of k H Phi(u) gives
+//   I = H(a) Phi(u_a) - H(b) Phi(u_b) + G (Phi(v_b) - Phi(v_a)),
+// and with Phi = 1 - Q (Q the upper tail) the same identity for k H Q gives
+//   I = H(a) - H(b) - [H(a) Q(u_a) - H(b) Q(u_b) - G (Q(v_a) - Q(v_b))].
+// The first form is used below the median (u <= 0), the second above, each term as the
+// exponential of its logarithm, so that no tail underflows early and no factor overflows alone.
+// a may be -infinity and b +infinity (the curve's ends continued). Zero on a flat segment.
+double segment_integral(const LogLogHazard& h, std::size_t i, double a, double b, double m, double beta) {
+  const double k = h.slope[std::min(i, h.slope.size() - 1)];
+  if (!(k > 0.0) || !(b > a)) return 0.0;
+  const double log_g = h.log_h[i] - k * (m - h.x[i]) + 0.5 * k * k * beta * beta;
+  // H(x) Phi(u), H(x) Q(u) and G Phi(v), G Q(v) at an end, 0 where x is infinite.
+  const auto hazard_times = [&](double x, bool upper) {
+    if (std::isinf(x)) return 0.0;  // the Gaussian tail below, the falling power law above
+    const double u = (x - m) / beta;
+    return std::exp(h.log_hazard(i, x) + log_normal_cdf(upper ? -u : u));
+  };
+  const auto g_times = [&](double x, bool upper) {
+    if (std::isinf(x)) return (x > 0.0) != upper ? std::exp(log_g) : 0.0;
+    const double v = (x - m) / beta + k * beta;
+    return std::exp(log_g + log_normal_cdf(upper ? -v : v));
+  };
+  if (b <= m) return hazard_times(a, false) - hazard_times(b, false) + (g_times(b, false) - g_times(a, false));
+  if (a >= m) {
+    const double fall = (std::isinf(a) ? INFINITY : std::exp(h.log_hazard(i, a))) - (std::isinf(b) ? 0.0 : std::exp(h.log_hazard(i, b)));
+    return fall - (hazard_times(a, true) - hazard_times(b, true) - (g_times(a, true) - g_times(b, true)));
+  }
+  return segment_integral(h, i, a, m, m, beta) + segment_integral(h, i, m, b, m, beta);
 }
 
 }  // namespace
@@ -101,23 +106,16 @@ FrequencyIntegral convolve(const HazardCurve& hazard, double median, double beta
   const double m = std::log(median);
   const auto fragility = [&](double x) { return normal_cdf((x - m) / beta); };
   FrequencyIntegral result;
-  double error = 0.0;
-  result.below_curve = part_below(h, m, beta, h.x.front(), error);
+  result.below_curve = segment_integral(h, 0, -INFINITY, h.x.front(), m, beta);
+  result.segment_frequency.reserve(h.slope.size());
   for (std::size_t i = 0; i + 1 < h.x.size(); ++i) {
-    const auto f = [&](double x) { return integrand(h, i, x, m, beta); };
-    result.segment_frequency.push_back(integrate(f, h.x[i], h.x[i + 1], error));
+    result.segment_frequency.push_back(segment_integral(h, i, h.x[i], h.x[i + 1], m, beta));
   }
-  // Above the last point the last power law, to where it has fallen by e^-50 (or, flat, adds nothing).
   const std::size_t n = h.last();
-  const double k = h.slope.back();
-  if (k > 0.0) {
-    const auto f = [&](double x) { return integrand(h, n, x, m, beta); };
-    result.above_curve = integrate(f, h.x[n], h.x[n] + 50.0 / k, error);
-  }
+  result.above_curve = segment_integral(h, n, h.x[n], INFINITY, m, beta);
   result.undetermined_above = hazard.annual_frequency.back() * (1.0 - fragility(h.x[n]));
   result.annual_frequency = result.below_curve + result.above_curve;
   for (double s : result.segment_frequency) result.annual_frequency += s;
-  result.error_estimate = error;
   // A curve whose end segment is steep enough continues, below its first point, to
   // frequencies that outgrow any fragility's tail: no answer.
   if (!std::isfinite(result.annual_frequency))
@@ -152,9 +150,9 @@ void check_coverage(const HazardCurve& hazard, double median, double beta, const
         "about " + number_text(std::exp(x) * to_unit) + " " + unit + " or beyond (1 % unsettled)");
   }
   if (integral.below_curve > kCoverage * total) {
-    double x = h.x.front(), error = 0.0;
+    double x = h.x.front();
     for (int j = 0; j < 2000; ++j, x -= 0.01) {
-      if (part_below(h, m, beta, x, error) <= kCoverage * total) break;
+      if (segment_integral(h, 0, -INFINITY, x, m, beta) <= kCoverage * total) break;
     }
     throw std::invalid_argument(
         "the hazard curve starts at " + number_text(hazard.intensity.front() * to_unit) + " " + unit + ", where the " +

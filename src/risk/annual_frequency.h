@@ -6,8 +6,9 @@
 //   lambda_F = integral over a of F(a) |dH(a)/da| da,   F(a) = Phi(ln(a / A_m) / beta)
 //
 // H is interpolated log-log between its points (a power law H_i (a / a_i)^-k_i on each
-// segment), so with x = ln a, |dH| = k_i H(a) dx and each segment's integral is smooth; it is
-// taken by adaptive Gauss-Kronrod quadrature (Boost.Math) to a relative 1e-10. Beyond the
+// segment), so with x = ln a, |dH| = k_i H(a) dx, and each segment's integral of the lognormal
+// F against it has a closed form (annual_frequency.cpp, segment_integral): exact to rounding,
+// and linear in the curve's points. Beyond the
 // curve's ends the end segments' power laws are continued; what they add is reported apart,
 // and the part above the last point that no continuation can settle, H(a_n) (1 - F(a_n))
 // (the integral above a_n lies between F(a_n) H(a_n) and H(a_n) for any hazard that falls to
@@ -58,7 +59,6 @@ struct FrequencyIntegral {
   double below_curve = 0.0;               // the part from the continuation below the first point
   double above_curve = 0.0;               // the part from the continuation above the last point
   double undetermined_above = 0.0;        // H(a_n) (1 - F(a_n)): what the curve cannot settle above it
-  double error_estimate = 0.0;            // the quadrature's, summed over segments
   std::vector<double> segment_frequency;  // the part from each segment [a_i, a_i+1] of the curve
 };
 
