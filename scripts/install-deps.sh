@@ -11,7 +11,7 @@ packages=(
   libnlopt-cxx-dev librandom123-dev
   libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev
   libopenmpi-dev openmpi-bin
-  python3-matplotlib python3-h5py python3-numpy
+  python3-matplotlib python3-h5py python3-numpy python3-pandas
   clang libclang-rt-dev libomp-dev
 )
 

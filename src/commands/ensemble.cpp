@@ -13,6 +13,7 @@
 #include "core/units.h"
 #include "ensemble/device_runner.h"
 #include "ensemble/execute.h"
+#include "ensemble/report_text.h"
 #ifdef CASKDEM_WITH_MPI
 #include "ensemble/distributed.h"
 #else
@@ -106,13 +107,7 @@ void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const
   std::cout << std::setprecision(4) << "wall time       " << report.wall_seconds << " s (" << report.realisations_run
             << " realisations in this run)\n";
   for (const LimitStateSummary& s : report.limit_states) {
-    std::cout << std::left << std::setw(20) << s.limit_state.name;
-    if (s.fit.fitted) {
-      std::cout << "median " << intensity_text(spec.measure, s.fit.median) << ", log-std " << s.fit.log_std
-                << " (max misfit " << s.misfit.max_abs_difference << ", chi-square p " << s.misfit.p_value << ")\n";
-    } else {
-      std::cout << "no curve: " << s.fit.reason << "\n";
-    }
+    for (const std::string& line : limit_state_lines(plan, s)) std::cout << line << "\n";
     if (spec.outer_count() > 1) {
       const fragility::NestedFit& n = s.nested;
       std::cout << std::setw(20) << "  family";
@@ -127,6 +122,7 @@ void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const
     }
   }
   std::cout << "wrote           " << out.string() << "\n";
+  for (const std::filesystem::path& table : report.tables) std::cout << "wrote           " << table.string() << "\n";
   if (!options.no_plot) {
     std::filesystem::path png = out;
     png.replace_extension(".png");

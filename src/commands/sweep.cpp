@@ -10,6 +10,8 @@
 #include <optional>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "casefile/case_file.h"
 #include "commands/commands.h"
 #include "commands/validators.h"
@@ -126,9 +128,14 @@ void add_sweep(CLI::App& app) {
       p.theory_tipped = response.tipped_over;
     }
 
+    // What the sweep compared beside the table (which pandas and numpy read with their defaults).
+    std::ofstream(directory / "sweep.json") << nlohmann::json{{"case_file", base.file.string()},
+                                                              {"dem_stability_angle_rad", model.stability_angle},
+                                                              {"theory_stability_angle_rad", block.slenderness()},
+                                                              {"restitution", fv.restitution}}
+                                                   .dump(2)
+                                            << "\n";
     std::ofstream csv(directory / "sweep.csv");
-    csv << "# caskdem sweep of " << base.file.string() << "; DEM alpha " << model.stability_angle
-        << " rad, theory alpha " << block.slenderness() << " rad, restitution " << fv.restitution << "\n";
     csv << "amplitude_cm,frequency_Hz,dem_max_rotation_rad,dem_rotation_ratio,dem_tipped,theory_max_rotation_rad,"
            "theory_rotation_ratio,theory_tipped\n";
     std::cout << std::setprecision(4) << "amplitude cm  frequency Hz  DEM theta/alpha  theory theta/alpha\n";

@@ -180,8 +180,8 @@ void write_histories(const std::filesystem::path& file, const MeasuredSet& set, 
     }
     g.write("measured_rotation", rotation, "rad");
     g.write("measured_slide", slide, "m");
-    g.write("rotation_valid", test.rotation_valid);
-    g.write("slide_valid", test.slide_valid);
+    g.write("rotation_valid", test.rotation_valid, "1");
+    g.write("slide_valid", test.slide_valid, "1");
     g.write("table_acceleration", test.table_acceleration, "m/s^2");
     g.write("baseline_rotation", baseline[t].rotation, "rad");
     g.write("baseline_slide", baseline[t].slide, "m");

@@ -2,8 +2,42 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
+#include <sstream>
 
 namespace caskdem {
+
+namespace {
+
+bool standing(const EnsembleResults& r, std::int64_t i) {
+  return static_cast<LaneStatus>(r.status[i]) == LaneStatus::running;
+}
+
+// The quantity a rocking or sliding limit state compares with its threshold.
+double measured(const LimitState& limit_state, const EnsembleResults& r, std::int64_t i) {
+  return limit_state.kind == LimitState::Kind::sliding ? r.max_abs_slide[i] : r.max_rotation_ratio[i];
+}
+
+// Why a state's stripes equal another's: the same casks exceed both.
+std::string same_stripes_reason(const LimitStateSummary& s, const LimitStateSummary& other) {
+  std::ostringstream out;
+  out << std::setprecision(3) << "the same stripes as " << other.limit_state.name;
+  const bool by_tipping = std::all_of(s.standing_count.begin(), s.standing_count.end(), [](std::int64_t c) { return c == 0; });
+  if (by_tipping && s.limit_state.kind != LimitState::Kind::tip_over) {
+    out << ": no cask that stayed standing reached it (the largest, ";
+    if (s.limit_state.kind == LimitState::Kind::sliding) {
+      out << s.largest_standing * 100.0 << " cm of slide";
+    } else {
+      out << s.largest_standing << " alpha of rotation";
+    }
+    out << "), so it counts the casks that tipped over, which exceed every limit state";
+  } else {
+    out << ": the same casks exceed both";
+  }
+  return out.str();
+}
+
+}  // namespace
 
 bool exceeds(const LimitState& limit_state, const EnsembleResults& r, std::int64_t i) {
   const auto status = static_cast<LaneStatus>(r.status[i]);
@@ -28,6 +62,7 @@ std::vector<LimitStateSummary> analyse(const EnsemblePlan& plan, const EnsembleR
   const double low = 0.1 * spec.levels.front(), high = 2.0 * spec.levels.back();
   for (int k = 0; k <= 200; ++k) grid.push_back(low * std::pow(high / low, k / 200.0));
 
+  const MeasureSet measures = measure_set(plan);
   std::vector<LimitStateSummary> summaries;
   for (std::size_t l = 0; l < spec.limit_states.size(); ++l) {
     const LimitState& limit_state = spec.limit_states[l];
@@ -42,6 +77,14 @@ std::vector<LimitStateSummary> analyse(const EnsemblePlan& plan, const EnsembleR
     }
     LimitStateSummary s;
     s.limit_state = limit_state;
+    s.standing_count.assign(stripes, 0);
+    if (limit_state.kind != LimitState::Kind::tip_over) {
+      for (std::int64_t i = 0; i < r.size; ++i) {
+        if (!r.completed[i] || !standing(r, i)) continue;
+        s.largest_standing = std::max(s.largest_standing, measured(limit_state, r, i));
+        if (exceeds(limit_state, r, i)) ++s.standing_count[r.stripe[i]];
+      }
+    }
     s.stripes = fragility::stripe_probabilities(data, spec.confidence);
     std::vector<std::int64_t> trials, counts;
     for (const auto& p : s.stripes) {
@@ -54,7 +97,12 @@ std::vector<LimitStateSummary> analyse(const EnsemblePlan& plan, const EnsembleR
       // Each limit state gets its own stream of bootstrap numbers.
       s.band = fragility::bootstrap_band(data, grid, spec.bootstrap_replicates, spec.confidence, spec.seed + 7919 * (l + 1));
       s.misfit = fragility::misfit(s.fit, s.stripes);
+      // The measures in turn, the ensemble's own first: its test is the curve's.
+      // One bootstrap stream for every limit state: two states with the same stripes get the same test.
+      s.measures = fit_measures(plan, measures, data, fragility::kFitTestReplicates, spec.seed + 6151);
+      s.test = s.measures.front().test;
     }
+    s.by_motion = data;
     if (spec.outer_count() > 1) {
       std::vector<std::vector<std::int64_t>> outer_trials(spec.outer_count(), std::vector<std::int64_t>(stripes, 0));
       std::vector<std::vector<std::int64_t>> outer_counts = outer_trials;
@@ -68,6 +116,19 @@ std::vector<LimitStateSummary> analyse(const EnsemblePlan& plan, const EnsembleR
                                        spec.seed + 104729 * (l + 1));
     }
     summaries.push_back(std::move(s));
+  }
+  // A state whose stripes repeat an earlier one's says so.
+  for (std::size_t l = 1; l < summaries.size(); ++l) {
+    for (std::size_t k = 0; k < l; ++k) {
+      const auto counts = [](const LimitStateSummary& s) {
+        std::vector<std::int64_t> c;
+        for (const auto& p : s.stripes) c.push_back(p.count);
+        return c;
+      };
+      if (counts(summaries[l]) != counts(summaries[k])) continue;
+      summaries[l].same_as = same_stripes_reason(summaries[l], summaries[k]);
+      break;
+    }
   }
   return summaries;
 }

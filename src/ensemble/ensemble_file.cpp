@@ -105,6 +105,28 @@ std::string intensity_name(IntensityMeasure measure) {
   return "pga";
 }
 
+std::string intensity_display_unit(IntensityMeasure measure) {
+  switch (measure) {
+    case IntensityMeasure::pga:
+    case IntensityMeasure::sa: return "g";
+    case IntensityMeasure::pgv: return "cm/s";
+    case IntensityMeasure::pga_ratio:
+    case IntensityMeasure::pgv_ratio: return "";
+  }
+  return "";
+}
+
+double intensity_display_unit_to_si(IntensityMeasure measure) {
+  switch (measure) {
+    case IntensityMeasure::pga:
+    case IntensityMeasure::sa: return units::standard_gravity;
+    case IntensityMeasure::pgv: return 0.01;
+    case IntensityMeasure::pga_ratio:
+    case IntensityMeasure::pgv_ratio: return 1.0;
+  }
+  return 1.0;
+}
+
 std::string intensity_text(IntensityMeasure measure, double value) {
   std::ostringstream out;
   out << std::setprecision(4);

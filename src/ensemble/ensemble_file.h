@@ -29,6 +29,9 @@ enum class IntensityMeasure {
 std::string intensity_name(IntensityMeasure measure);
 // A level of the measure (SI inside) as the user reads it: "0.6 g", "40 cm/s", or the ratio.
 std::string intensity_text(IntensityMeasure measure, double value);
+// That unit ("g", "cm/s", "" for the ratios) and the SI value of one of it.
+std::string intensity_display_unit(IntensityMeasure measure);
+double intensity_display_unit_to_si(IntensityMeasure measure);
 
 struct LimitState {
   enum class Kind { tip_over, rotation_ratio, sliding };

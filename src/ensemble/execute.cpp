@@ -7,6 +7,7 @@
 
 #include "core/error.h"
 #include "ensemble/device_runner.h"
+#include "ensemble/limit_state_file.h"
 #include "ensemble/progress.h"
 #include "ensemble/runner.h"
 
@@ -45,6 +46,7 @@ void ResultFile::checkpoint_if_due() {
 void ResultFile::finish(ExecuteReport& report) {
   report.limit_states = analyse(plan_, results_);
   write(&report.limit_states);
+  report.tables = write_fragility_tables(output_, plan_, report.limit_states);
   report.wall_seconds = run_.wall_seconds;
 }
 

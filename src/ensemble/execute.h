@@ -29,6 +29,7 @@ struct ExecuteReport {
   std::int64_t realisations_run = 0;  // in this invocation
   double wall_seconds = 0.0;          // in total, over resumed runs
   std::vector<LimitStateSummary> limit_states;
+  std::vector<std::filesystem::path> tables;  // the fragility JSON and CSV beside the result file
   LaneOccupancy occupancy;            // of this invocation's lanes (ensemble/runner.h)
 };
 

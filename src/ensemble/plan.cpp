@@ -209,6 +209,14 @@ EnsemblePlan::EnsemblePlan(const EnsembleSpec& spec, InstructionSet isa)
   }
 }
 
+double EnsemblePlan::model_scale() const {
+  double scale = spec_.motions.empty() ? 1.0 : spec_.motions.front().similarity_scale;
+  for (const MotionSpec& m : spec_.motions) {
+    if (m.similarity_scale != scale) return 0.0;
+  }
+  return scale;
+}
+
 const motion::TableMotion* EnsemblePlan::component(int m, int c) const {
   if (c == 0) return motions_[m].get();
   if (!three_d()) return nullptr;

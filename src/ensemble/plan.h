@@ -89,6 +89,9 @@ class EnsemblePlan {
   bool restitution_uncertain() const { return spec_.uncertain.count("restitution") > 0; }
   double stability_angle() const { return model_.stability_angle; }
   double frequency_parameter() const { return frequency_parameter_; }  // p of the rigid equivalent
+  // N when every motion is a prototype's applied to a 1/N model (its similarity_scale), so that
+  // the stripes' intensities are the model's; 1 for a full-size cask; 0 when the motions differ.
+  double model_scale() const;
 
   RealisationInput realisation(std::int64_t index) const;
   int outer_of(std::int64_t index) const { return static_cast<int>(index / spec_.realisations_per_outer_point()); }

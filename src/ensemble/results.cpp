@@ -5,6 +5,7 @@
 #include "caskdem/build_info.h"
 #include "core/error.h"
 #include "ensemble/analysis.h"
+#include "ensemble/limit_state_file.h"
 #include "io/hdf5_file.h"
 
 namespace caskdem {
@@ -14,17 +15,17 @@ namespace {
 // The per-realisation datasets, named once for writing and reading.
 template <class F>
 void for_each_double(EnsembleResults& r, F&& f) {
-  f("level", r.level, "");
-  f("scale_factor", r.scale_factor, "");
-  f("friction_static", r.friction_static, "");
-  f("friction_kinetic", r.friction_kinetic, "");
+  f("level", r.level, r.level_unit.c_str());
+  f("scale_factor", r.scale_factor, "1");
+  f("friction_static", r.friction_static, "1");
+  f("friction_kinetic", r.friction_kinetic, "1");
   f("friction_decay_speed", r.friction_decay_speed, "m/s");
-  f("restitution", r.restitution, "");
-  f("damping_ratio", r.damping_ratio, "");
+  f("restitution", r.restitution, "1");
+  f("damping_ratio", r.damping_ratio, "1");
   f("mass", r.mass, "kg");
   f("centre_height", r.centre_height, "m");
   f("max_abs_rotation", r.max_abs_rotation, "rad");
-  f("max_rotation_ratio", r.max_rotation_ratio, "");
+  f("max_rotation_ratio", r.max_rotation_ratio, "1");
   f("max_abs_slide", r.max_abs_slide, "m");
   f("residual_slide", r.residual_slide, "m");
   f("max_uplift", r.max_uplift, "m");
@@ -66,7 +67,8 @@ void read_realisations(const std::filesystem::path& file, const hdf5::Group& roo
 
 }  // namespace
 
-EnsembleResults::EnsembleResults(const EnsemblePlan& plan) : size(plan.size()), three_d(plan.three_d()) {
+EnsembleResults::EnsembleResults(const EnsemblePlan& plan)
+    : size(plan.size()), three_d(plan.three_d()), level_unit(intensity_si_unit(plan.spec().measure)) {
   const auto n = static_cast<std::size_t>(size);
   completed.assign(n, 0);
   for_each_double(*this, [n](const char*, std::vector<double>& v, const char*) { v.assign(n, 0.0); });
@@ -148,6 +150,10 @@ std::vector<char> result_image(const std::filesystem::path& file, const Ensemble
     root.attribute("stability_angle_rad", plan.stability_angle());
     root.attribute("frequency_parameter_rad_s", plan.frequency_parameter());
     root.attribute("intensity_measure", intensity_name(spec.measure));
+    root.attribute("intensity_unit", intensity_si_unit(spec.measure));
+    // 3: the stripes' intensities are a 1/3 model's, its motions prototype motions compressed in
+    // time (their similarity_scale); 1: a full-size cask; 0: motions on models of several scales.
+    root.attribute("model_scale", plan.model_scale());
     if (plan.three_d()) {
       root.attribute("pair_measure", std::string(spec.pair_measure == MotionSpec::PairMeasure::rotd100          ? "rotd100"
                                                  : spec.pair_measure == MotionSpec::PairMeasure::geometric_mean ? "geometric_mean"
@@ -166,9 +172,10 @@ std::vector<char> result_image(const std::filesystem::path& file, const Ensemble
 
     hdf5::Group realisations = root.group("realisations");
     EnsembleResults& r = const_cast<EnsembleResults&>(results);  // the visitors are shared with reading
-    realisations.write("completed", r.completed);
+    realisations.write("completed", r.completed, "1");
     for_each_double(r, [&](const char* name, std::vector<double>& v, const char* units) { realisations.write(name, v, units); });
-    for_each_integer(r, [&](const char* name, std::vector<std::int64_t>& v) { realisations.write(name, v); });
+    // Indices, the status code and counts: dimensionless.
+    for_each_integer(r, [&](const char* name, std::vector<std::int64_t>& v) { realisations.write(name, v, "1"); });
 
     hdf5::Group motions = root.group("motions");
     std::vector<double> pga, pgv, duration;
@@ -188,84 +195,16 @@ std::vector<char> result_image(const std::filesystem::path& file, const Ensemble
     }
 
     hdf5::Group stripes = root.group("stripes");
-    stripes.write("level", spec.levels, intensity_name(spec.measure));
+    stripes.write("level", spec.levels, intensity_si_unit(spec.measure));
+    stripes.attribute("measure", intensity_name(spec.measure));
 
     if (plan.restitution_uncertain()) {
       hdf5::Group calibration = root.group("calibration");
-      calibration.write("damping_ratio", plan.calibration().damping_ratio);
-      calibration.write("restitution", plan.calibration().restitution);
+      calibration.write("damping_ratio", plan.calibration().damping_ratio, "1");
+      calibration.write("restitution", plan.calibration().restitution, "1");
     }
 
-    if (limit_states) {
-      hdf5::Group all = root.group("limit_states");
-      for (const LimitStateSummary& s : *limit_states) {
-        hdf5::Group g = all.group(s.limit_state.name);
-        g.attribute("kind", std::string(s.limit_state.kind == LimitState::Kind::tip_over         ? "tip_over"
-                                        : s.limit_state.kind == LimitState::Kind::rotation_ratio ? "rotation_ratio"
-                                                                                                 : "sliding"));
-        g.attribute("threshold", s.limit_state.threshold);
-        std::vector<double> level, probability, lower, upper;
-        std::vector<std::int64_t> trials, count;
-        for (const auto& p : s.stripes) {
-          level.push_back(p.level);
-          trials.push_back(p.trials);
-          count.push_back(p.count);
-          probability.push_back(p.probability);
-          lower.push_back(p.lower);
-          upper.push_back(p.upper);
-        }
-        g.write("level", level);
-        g.write("trials", trials);
-        g.write("count", count);
-        g.write("probability", probability);
-        g.write("probability_lower", lower);
-        g.write("probability_upper", upper);
-        g.attribute("fitted", std::int64_t(s.fit.fitted));
-        if (s.fit.fitted) {
-          g.attribute("median", s.fit.median);
-          g.attribute("log_std", s.fit.log_std);
-          g.attribute("log_likelihood", s.fit.log_likelihood);
-          g.attribute("misfit_max_abs_difference", s.misfit.max_abs_difference);
-          g.attribute("misfit_stripes_outside_interval", std::int64_t(s.misfit.stripes_outside_interval));
-          // A fit whose probability underflows to exactly 0 or 1 where data disagree has an
-          // infinite chi-square; the file holds the largest double instead (p-value 0).
-          g.attribute("misfit_chi_square", std::isfinite(s.misfit.chi_square) ? s.misfit.chi_square : 1.7976931348623157e308);
-          g.attribute("misfit_degrees_of_freedom", std::int64_t(s.misfit.degrees_of_freedom));
-          g.attribute("misfit_p_value", s.misfit.p_value);
-          g.write("band_im", s.band.im);
-          g.write("band_lower", s.band.lower);
-          g.write("band_upper", s.band.upper);
-          g.attribute("band_replicates", std::int64_t(s.band.replicates));
-          g.attribute("band_failed_replicates", std::int64_t(s.band.failed_replicates));
-          g.attribute("band_resampled", s.band.resampled);
-        } else {
-          g.attribute("not_fitted_because", s.fit.reason);
-        }
-        if (spec.outer_count() > 1) {
-          const fragility::NestedFit& n = s.nested;
-          hdf5::Group e = g.group("epistemic");
-          e.attribute("fitted", std::int64_t(n.fitted));
-          if (!n.fitted) e.attribute("not_fitted_because", n.reason);
-          if (n.fitted) {
-            e.attribute("median", n.median);
-            e.attribute("beta_r", n.beta_r);
-            e.attribute("beta_u", n.beta_u);
-            e.attribute("beta_c", n.beta_c());
-            e.attribute("log_median_spread", n.log_median_spread);
-            e.attribute("fit_noise", n.fit_noise);
-            e.attribute("confidence", n.confidence);
-            e.attribute("median_low", n.median_low);
-            e.attribute("median_high", n.median_high);
-            e.attribute("beta_r_low", n.beta_r_low);
-            e.attribute("beta_r_high", n.beta_r_high);
-            e.attribute("beta_u_low", n.beta_u_low);
-            e.attribute("beta_u_high", n.beta_u_high);
-          }
-          e.write("outer_median", n.outer_median);
-          e.write("outer_log_std", n.outer_log_std);
-        }
-      }
-    }
+    if (limit_states) write_limit_states(root, plan, *limit_states);
     return hdf5::file_image(root);
   }
 }

@@ -28,6 +28,7 @@ namespace caskdem {
 struct EnsembleResults {
   std::int64_t size = 0;
   bool three_d = false;  // a 3D ensemble also keeps incidence and spin
+  std::string level_unit = "1";  // the SI unit of the ensemble's intensity measure
   std::vector<std::uint8_t> completed;
   // inputs, filled for every realisation from the plan
   std::vector<std::int64_t> stripe, motion;

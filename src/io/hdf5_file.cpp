@@ -97,28 +97,33 @@ void Group::write_matrix(const std::string& name, const std::vector<double>& val
   if (!values.empty() && H5Dwrite(set.get(), H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
     fail("cannot write dataset " + name);
   }
-  if (!units.empty()) {
-    Group dataset(std::move(set), path_ + "/" + name, file_);
-    dataset.attribute("units", units);
-  }
+  label_units(std::move(set), name, units);
 }
 
-void Group::write(const std::string& name, const std::vector<std::int64_t>& values) {
+void Group::label_units(Handle set, const std::string& name, const std::string& units) {
+  if (units.empty()) fail("dataset " + name + " written without a unit");
+  Group dataset(std::move(set), path_ + "/" + name, file_);
+  dataset.attribute("units", units);
+}
+
+void Group::write(const std::string& name, const std::vector<std::int64_t>& values, const std::string& units) {
   Handle space = dataspace_1d(values.size());
   Handle set(H5Dcreate2(id(), name.c_str(), H5T_STD_I64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
   if (!set.valid()) fail("cannot create dataset " + name);
   if (!values.empty() && H5Dwrite(set.get(), H5T_NATIVE_INT64, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
     fail("cannot write dataset " + name);
   }
+  label_units(std::move(set), name, units);
 }
 
-void Group::write(const std::string& name, const std::vector<std::uint8_t>& values) {
+void Group::write(const std::string& name, const std::vector<std::uint8_t>& values, const std::string& units) {
   Handle space = dataspace_1d(values.size());
   Handle set(H5Dcreate2(id(), name.c_str(), H5T_STD_U8LE, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Dclose);
   if (!set.valid()) fail("cannot create dataset " + name);
   if (!values.empty() && H5Dwrite(set.get(), H5T_NATIVE_UINT8, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()) < 0) {
     fail("cannot write dataset " + name);
   }
+  label_units(std::move(set), name, units);
 }
 
 void Group::write_strings(const std::string& name, const std::vector<std::string>& values) {

@@ -43,12 +43,14 @@ class Group {
   void remove(const std::string& name);  // a member (group or dataset), if there
   std::vector<std::string> member_names() const;  // groups and datasets, in name order
 
-  void write(const std::string& name, const std::vector<double>& values, const std::string& units = "");
-  void write(const std::string& name, const std::vector<std::int64_t>& values);
-  void write(const std::string& name, const std::vector<std::uint8_t>& values);
+  // Every numeric dataset states its unit (a UDUNITS string: "m/s", "rad", "1/yr"; "1" for a
+  // dimensionless number, a count or a flag), written as its `units` attribute.
+  void write(const std::string& name, const std::vector<double>& values, const std::string& units);
+  void write(const std::string& name, const std::vector<std::int64_t>& values, const std::string& units);
+  void write(const std::string& name, const std::vector<std::uint8_t>& values, const std::string& units);
   // Row-major matrix rows x columns.
   void write_matrix(const std::string& name, const std::vector<double>& values, std::size_t rows, std::size_t columns,
-                    const std::string& units = "");
+                    const std::string& units);
   void write_strings(const std::string& name, const std::vector<std::string>& values);
 
   std::vector<double> read_doubles(const std::string& name) const;
@@ -69,6 +71,7 @@ class Group {
 
  private:
   [[noreturn]] void fail(const std::string& what) const;
+  void label_units(Handle set, const std::string& name, const std::string& units);
   Handle handle_;
   std::string path_;
   std::filesystem::path file_;

@@ -32,6 +32,8 @@ std::string read_text(const std::filesystem::path& file) {
 nlohmann::json summary_json(const RunReport& report) {
   const RunSummary& s = report.result.summary;
   nlohmann::json j;
+  j["caskdem_version"] = build_info::version;
+  if (report.source) j["case_file"] = report.source->file.string();
   j["max_abs_rotation_rad"] = s.max_abs_rotation;
   j["stability_angle_rad"] = s.stability_angle;
   j["max_rotation_ratio"] = s.max_rotation_ratio;
@@ -82,7 +84,8 @@ void write_history_csv(const std::filesystem::path& file, const RunReport& repor
   const TimeHistory& h = report.result.history;
   std::ofstream out(file);
   if (!out) throw std::runtime_error(file.string() + ": cannot write");
-  out << "# caskdem " << build_info::version << " time history; SI units\n";
+  // No comment line: pandas and numpy read the header with their defaults. What the run was (the
+  // version, the case, the summary) is in summary.json beside it; every column's unit is in its name.
   out << "time_s,rotation_rad,angular_velocity_rad_s,slide_m,uplift_m,table_acceleration_m_s2,table_velocity_m_s,"
          "table_displacement_m,table_vertical_acceleration_m_s2";
   for (std::size_t k = 0; k < h.normal_force.size(); ++k) out << ",normal_force_" << k << "_N";

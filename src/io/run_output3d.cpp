@@ -74,6 +74,7 @@ void print_summary3d(std::ostream& out, const RunReport3D& report) {
 
 void write_summary_json3d(const std::filesystem::path& file, const RunReport3D& report) {
   nlohmann::json j;
+  j["caskdem_version"] = build_info::version;
   j["dimensions"] = 3;
   each_summary_figure(report, [&](const char* key, double value) { j[key] = value; });
   j["status"] = status_name(report.result.summary.status);
@@ -89,7 +90,8 @@ void write_history_csv3d(const std::filesystem::path& file, const RunReport3D& r
   const TimeHistory3D& h = report.result.history;
   std::ofstream out(file);
   if (!out) throw std::runtime_error(file.string() + ": cannot write");
-  out << "# caskdem " << build_info::version << " time history of a 3D run; SI units; x, z horizontal, y up\n";
+  // No comment line (pandas and numpy read the header as it is): x and z are horizontal, y is up
+  // (docs/output.md), the run itself is in summary.json beside it.
   out << "time_s,tilt_rad,tilt_azimuth_rad,spin_rad,rim_contact_azimuth_rad,slide_x_m,slide_z_m,slide_m,uplift_m,"
          "table_x_m_s2,table_z_m_s2,table_vertical_m_s2\n";
   out << std::setprecision(10);

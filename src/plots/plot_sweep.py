@@ -12,10 +12,7 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 
 def main(csv_file, png_file):
-    # numpy takes a leading comment line for the header when names=True: drop comments first.
-    with open(csv_file) as f:
-        lines = [line for line in f if not line.startswith("#")]
-    data = np.genfromtxt(lines, delimiter=",", names=True)
+    data = np.genfromtxt(csv_file, delimiter=",", names=True)
     fig, ax = plt.subplots(figsize=(8, 5))
     colours = ["tab:blue", "tab:orange", "tab:green", "tab:red", "tab:purple"]
     for i, amplitude in enumerate(np.unique(data["amplitude_cm"])):
