@@ -42,8 +42,9 @@ void write_measures(hdf5::Group& g, const std::vector<MeasureFit>& measures) {
   hdf5::Group all = g.group("measures");
   for (std::size_t k = 0; k < measures.size(); ++k) {
     const MeasureFit& m = measures[k];
-    hdf5::Group h = all.group(m.name);
-    h.attribute("order", std::int64_t(k));
+    // Named by their order (a measure's name may hold a '/'), the ensemble's own first.
+    hdf5::Group h = all.group(std::to_string(k));
+    h.attribute("name", m.name);
     h.attribute("design", std::int64_t(m.design));
     h.attribute("display_unit", m.unit);
     h.attribute("display_unit_to_si", m.unit_to_si);

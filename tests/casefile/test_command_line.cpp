@@ -161,9 +161,8 @@ similarity_scale = 3
   ASSERT_FALSE(rotd50.empty()) << summary;
   EXPECT_NEAR(std::stod(rotd50[1].str()), 5.0, 1e-9) << "the pair as applied has the target RotD50";
   std::ifstream csv(out / "history.csv");
-  std::string comment, header, line;
-  std::getline(csv, comment);
-  std::getline(csv, header);
+  std::string header, line;
+  std::getline(csv, header);  // the first line: no comment before it (pandas and numpy read it as the header)
   EXPECT_EQ(header.rfind("time_s,tilt_rad,tilt_azimuth_rad,spin_rad,rim_contact_azimuth_rad,slide_x_m,slide_z_m", 0), 0u)
       << header;
   int rows = 0;
