@@ -51,13 +51,18 @@ struct Response3D {
   T spin;                // rad, the turn about the cask's own axis, accumulated
   T above_stability;     // 1 while the tilt is beyond alpha
   T instability_time;    // s, the last time the tilt rose past alpha
+  // Slip: how far the cask's material slid over the floor where it touches, apart from the walk of
+  // its base centre while it rolls on its rim (kernels/step3d.h): a vector in the floor plane,
+  // accumulated, and its largest magnitude.
+  T slip_x, slip_z;      // m
+  T max_slip;            // m
 
   template <class F>
   CASKDEM_HOST_DEVICE void for_each_field(F&& f) {
     f(status); f(end_time); f(max_axis_departure); f(max_slide); f(max_uplift); f(base_x0); f(base_z0); f(spin);
-    f(above_stability); f(instability_time);
+    f(above_stability); f(instability_time); f(slip_x); f(slip_z); f(max_slip);
   }
-  static constexpr int field_count = 10;
+  static constexpr int field_count = 13;
 };
 
 }  // namespace caskdem

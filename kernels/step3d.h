@@ -195,6 +195,7 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   Vector3<T> torque{rim_moment.x - pressure_moment.z, rim_moment.y, rim_moment.z + pressure_moment.x};
 
   // The centre of the base: one contact point with its own spring-slider.
+  T centre_normal = zero, centre_slip_x = zero, centre_slip_z = zero;
   {
     const Vector3<T> arm = rotation.apply({-p.centre_x, radius - p.centre_y, zero});
     const T gap = body.y + arm.y - radius;
@@ -203,8 +204,11 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
     const T normal_stiffness = broadcast<T>(contacts.centre_normal_stiffness) * p.stiffness_scale;
     const T shear_stiffness = broadcast<T>(contacts.centre_shear_stiffness) * p.stiffness_scale;
     const T normal = normal_force(normal_stiffness, p, gap, velocity.y + spin.y);
-    const Vector3<T> friction = shear_contact<Law>(model, p, gap < zero, active, normal, shear_stiffness,
-                                                   velocity.x + spin.x, velocity.z + spin.z, points[1]);
+    centre_normal = normal;
+    centre_slip_x = velocity.x + spin.x;
+    centre_slip_z = velocity.z + spin.z;
+    const Vector3<T> friction = shear_contact<Law>(model, p, gap < zero, active, normal, shear_stiffness, centre_slip_x,
+                                                   centre_slip_z, points[1]);
     const Vector3<T> contact{friction.x, normal, friction.z};
     force = {force.x + contact.x, force.y + contact.y, force.z + contact.z};
     const Vector3<T> moment = cross(lever, contact);
@@ -232,6 +236,18 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   const auto running = r.status == zero;
   r.max_axis_departure = lane::max(departure, r.max_axis_departure);
   r.max_slide = lane::max(slide, r.max_slide);
+  // Slip: the velocity of the material where the cask bears on the floor (the rim's centre of
+  // pressure and the base centre, weighted by their normal forces), over the step. A cask rolling
+  // on its rim without slipping bears where its material stands still: no slip, while its base
+  // centre walks.
+  const T bearing = rim_normal + centre_normal;
+  const auto bears = running && bearing > zero;
+  const T weight = broadcast<T>(1.0) / select(bears, bearing, broadcast<T>(1.0));
+  const T bearing_x = (rim_normal * (velocity.x + rim_spin.x) + centre_normal * centre_slip_x) * weight;
+  const T bearing_z = (rim_normal * (velocity.z + rim_spin.z) + centre_normal * centre_slip_z) * weight;
+  r.slip_x = select(bears, r.slip_x + bearing_x * dt, r.slip_x);
+  r.slip_z = select(bears, r.slip_z + bearing_z * dt, r.slip_z);
+  r.max_slip = lane::max(lane::sqrt(r.slip_x * r.slip_x + r.slip_z * r.slip_z), r.max_slip);
   const auto above = departure > broadcast<T>(contacts.stability_departure);
   const auto rose_past_alpha = above && (r.above_stability < broadcast<T>(0.5));
   if (lane::any(rose_past_alpha)) r.instability_time = select(rose_past_alpha, time, r.instability_time);

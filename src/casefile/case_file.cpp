@@ -228,6 +228,12 @@ void read_integration(TableReader& root, Case& c) {
       "contact_stiffness_scale", t.quantity_or("contact_stiffness_scale", Dimension::dimensionless, 1.0), 1e-4, 1.0);
   c.duration = t.in_range("duration", t.quantity_or("duration", Dimension::time, 0.0), 0.0, kLongestDuration);
   c.settle_time = t.in_range("settle_time", t.quantity_or("settle_time", Dimension::time, 2.0), 0.0, kLongestDuration);
+  c.settle_time_given = t.has("settle_time");
+  c.rest_cap = t.in_range("rest_cap", t.quantity_or("rest_cap", Dimension::time, 60.0), 0.0, kLongestDuration);
+  c.rest_cap_given = t.has("rest_cap");
+  if (c.rest_cap_given && c.cask.dimensions != 3) {
+    t.fail("rest_cap", "a planar case runs for duration, or its motion and settle_time; rest_cap is a 3D case run's");
+  }
   t.reject_unknown_keys();
 }
 
@@ -358,8 +364,9 @@ MotionSpec read_motion(TableReader& t, bool three_d) {
   return m;
 }
 
-std::unique_ptr<motion::TableMotion> make_motion(const MotionSpec& spec) {
+std::unique_ptr<motion::TableMotion> make_motion(const MotionSpec& spec, double* applied_scale) {
   const double time_factor = 1.0 / std::sqrt(spec.similarity_scale);
+  if (applied_scale) *applied_scale = 1.0;
   switch (spec.kind) {
     case MotionSpec::Kind::none:
       return motion::make_still();
@@ -376,10 +383,18 @@ std::unique_ptr<motion::TableMotion> make_motion(const MotionSpec& spec) {
       const char* key = spec.scaling == MotionSpec::Scaling::target_pga   ? "target_pga"
                         : spec.scaling == MotionSpec::Scaling::target_pgv ? "target_pgv"
                                                                           : "scale";
+      // Every scaling multiplies the record by one factor: the ratio of its peaks after and before.
+      const auto peak = [](const motion::Record& r) {
+        double p = 0.0;
+        for (double a : r.acceleration) p = std::max(p, std::abs(a));
+        return p;
+      };
+      const double peak_before = peak(record);
       try {
         if (spec.scaling == MotionSpec::Scaling::target_pga) record = motion::scaled_to_pga(record, spec.scale);
         else if (spec.scaling == MotionSpec::Scaling::target_pgv) record = motion::scaled_to_pgv(record, spec.scale);
         else record = motion::scaled(record, spec.scale);
+        if (applied_scale && peak_before > 0.0) *applied_scale = peak(record) / peak_before;
         // PGV targets refer to the prototype motion; the time compression follows.
         key = "similarity_scale";
         if (spec.similarity_scale != 1.0) record = motion::time_scaled(record, time_factor);
@@ -433,7 +448,7 @@ const KeySchema& shared_case_keys() {
       {"contact.barkan", {"shear_modulus", "poisson_ratio", "beta_z", "beta_x"}},
       {"friction", {"law", "coefficient", "static", "kinetic", "decay_speed", "table", "table_file"}},
       {"damping", {"ratio", "frequency"}},
-      {"integration", {"safety_factor", "contact_stiffness_scale", "duration", "settle_time"}},
+      {"integration", {"safety_factor", "contact_stiffness_scale", "duration", "settle_time", "rest_cap"}},
       {"limits", {"tip_over_angle", "lift_off_height", "pad_half_width"}},
   };
   return schema;

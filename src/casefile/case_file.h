@@ -53,7 +53,9 @@ struct MotionSpec {
 };
 
 // Builds the motion; a record that cannot be read is an InputError naming its file and line.
-std::unique_ptr<motion::TableMotion> make_motion(const MotionSpec& spec);
+// *applied_scale, when given, gets the factor the record's accelerations were multiplied by (its
+// scale, or what its target_pga or target_pgv took; 1 for sines, pulses and no motion).
+std::unique_ptr<motion::TableMotion> make_motion(const MotionSpec& spec, double* applied_scale = nullptr);
 
 struct OutputSpec {
   std::filesystem::path directory;  // default: results/<case name>
@@ -87,6 +89,9 @@ struct Case {
   std::optional<MotionSpec> vertical;
   double duration = 0.0;     // s; 0: motion duration + settle_time
   double settle_time = 2.0;  // s after the motion ends
+  bool settle_time_given = false;  // a 3D case run without it runs until the cask is at rest
+  double rest_cap = 60.0;    // s after the motion a 3D case run waits for rest at most ([integration] rest_cap)
+  bool rest_cap_given = false;
   OutputSpec output;
   FreeVibrationSpec free_vibration;
 };

@@ -1,6 +1,7 @@
 #include "casefile/toml_reader.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <stdexcept>
 #include <sstream>
@@ -134,8 +135,13 @@ std::string TableReader::choice(std::string_view key, const std::vector<std::str
     if (!fallback.empty()) return fallback;
     missing(key, "one of " + list);
   }
+  // Without case: "PGV" is pgv, as risk's --imt and --measure take it.
+  const auto lower = [](std::string text) {
+    for (char& c : text) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return text;
+  };
   for (const std::string& a : allowed) {
-    if (*value == a) return a;
+    if (lower(*value) == lower(a)) return a;
   }
   fail(key, "expected one of " + list + ", got \"" + *value + "\"");
 }

@@ -16,11 +16,12 @@ namespace caskdem {
 
 namespace {
 
-constexpr int kOutcomeFields = 10;  // index + the 9 fields of RealisationOutcome
+constexpr int kOutcomeFields = 12;  // index + the 11 fields of RealisationOutcome
 
 void pack(std::int64_t index, const RealisationOutcome& o, std::vector<double>& out) {
   out.insert(out.end(), {double(index), double(o.status), o.max_abs_rotation, o.max_abs_slide, o.residual_slide,
-                         o.max_uplift, o.impacts, o.end_time, o.instability_time, o.spin});
+                         o.max_uplift, o.impacts, o.end_time, o.instability_time, o.spin, o.max_slip,
+                         o.residual_slip});
 }
 
 RealisationOutcome unpack(const double* p, std::int64_t* index) {
@@ -35,6 +36,8 @@ RealisationOutcome unpack(const double* p, std::int64_t* index) {
   o.end_time = p[7];
   o.instability_time = p[8];
   o.spin = p[9];
+  o.max_slip = p[10];
+  o.residual_slip = p[11];
   return o;
 }
 

@@ -182,6 +182,10 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
   c.name = e.name;
   c.title = e.title;
   read_cask_and_contact(root, c, /*three_d_allowed=*/true);
+  if (c.rest_cap_given) {
+    root.table("integration").fail("rest_cap", "an ensemble's realisations run for duration, or their motion and "
+                                               "settle_time; rest_cap is a 3D case run's");
+  }
   if (root.has_table("free_vibration")) {
     TableReader t = root.table("free_vibration");
     c.free_vibration.initial_tilt_ratio =
@@ -409,7 +413,7 @@ EnsembleSpec load_ensemble(const std::filesystem::path& file) {
     e.block_lanes = static_cast<int>(lanes);
     e.checkpoint_interval = t.positive("checkpoint_interval", t.quantity_or("checkpoint_interval", Dimension::time, 10.0));
     e.device = t.choice("device", {"auto", "cpu", "cuda"}, "auto");
-    e.device_line = t.line_of("device");
+    e.device_line = t.has("device") ? t.line_of("device") : 0;
     t.reject_unknown_keys();
   }
   if (root.has("motion")) root.fail("motion", "an ensemble lists its motions as [[motions]] tables");

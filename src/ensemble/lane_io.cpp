@@ -64,6 +64,8 @@ RealisationOutcome lane_outcome3d(const EnsemblePlan& plan, const LaneParameters
   o.end_time = s.end_time;
   o.instability_time = s.instability_time;
   o.spin = s.spin;
+  o.max_slip = s.max_slip;
+  o.residual_slip = s.residual_slip;
   return o;
 }
 

@@ -35,6 +35,8 @@ void for_each_double(EnsembleResults& r, F&& f) {
   if (r.three_d) {
     f("incidence", r.incidence, "rad");
     f("spin", r.spin, "rad");
+    f("max_slip", r.max_slip, "m");
+    f("residual_slip", r.residual_slip, "m");
   }
 }
 
@@ -104,7 +106,11 @@ void EnsembleResults::record(std::int64_t i, const RealisationOutcome& o, double
   end_time[i] = o.end_time;
   tip_over_time[i] = o.status == LaneStatus::tipped_over ? o.end_time : -1.0;
   instability_time[i] = o.instability_time;
-  if (three_d) spin[i] = o.spin;
+  if (three_d) {
+    spin[i] = o.spin;
+    max_slip[i] = o.max_slip;
+    residual_slip[i] = o.residual_slip;
+  }
 }
 
 std::int64_t EnsembleResults::completed_count() const {

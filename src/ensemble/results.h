@@ -37,7 +37,7 @@ struct EnsembleResults {
   // outcomes, valid where completed
   std::vector<std::int64_t> status, impacts;
   std::vector<double> max_abs_rotation, max_rotation_ratio, max_abs_slide, residual_slide, max_uplift, end_time,
-      tip_over_time, instability_time, spin;
+      tip_over_time, instability_time, spin, max_slip, residual_slip;
 
   EnsembleResults() = default;
   explicit EnsembleResults(const EnsemblePlan& plan);

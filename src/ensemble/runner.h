@@ -32,6 +32,7 @@ struct RealisationOutcome {
   double end_time = 0.0;
   double instability_time = -1.0;
   double spin = 0.0;  // rad, about the cask's axis (3D)
+  double max_slip = 0.0, residual_slip = 0.0;  // m, sliding where the cask bears, rolling excluded (3D)
 };
 
 // The table acceleration of every motion at every step of its run (steps 0 .. steps(m) - 1 of

@@ -25,6 +25,8 @@ void each_summary_figure(const RunReport3D& report, Put&& put) {
   put("max_tilt_ratio", s.max_tilt_ratio);
   put("max_slide_m", s.max_slide);
   put("residual_slide_m", s.residual_slide);
+  put("max_slip_m", s.max_slip);
+  put("residual_slip_m", s.residual_slip);
   put("max_uplift_m", s.max_uplift);
   put("spin_rad", s.spin);
   put("rim_revolutions", s.rim_revolutions);
@@ -61,7 +63,10 @@ void print_summary3d(std::ostream& out, const RunReport3D& report) {
   out << "\n";
   if (!report.motions.time_base.empty()) out << "time base       " << report.motions.time_base << "\n";
   out << "max tilt        " << s.max_tilt << " rad = " << s.max_tilt_ratio << " alpha\n";
-  out << "sliding         max " << s.max_slide << " m, residual " << s.residual_slide << " m\n";
+  out << "base walk       max " << s.max_slide << " m, residual " << s.residual_slide
+      << " m (the base centre: sliding and rolling on the rim)\n";
+  out << "slip            max " << s.max_slip << " m, residual " << s.residual_slip
+      << " m (sliding over the floor where it bears, rolling excluded)\n";
   out << "max uplift      " << s.max_uplift << " m\n";
   out << "spin            " << s.spin << " rad about the axis; " << s.rim_revolutions
       << " revolutions of the contact around the rim (rolling)\n";
@@ -70,6 +75,16 @@ void print_summary3d(std::ostream& out, const RunReport3D& report) {
     out << " at t = " << s.end_time << " s (passed alpha at t = " << s.instability_time << " s)";
   }
   out << "\n";
+  if (s.rest_criterion && s.status == LaneStatus::running) {
+    out << "end             ";
+    if (s.came_to_rest) {
+      out << "at rest at t = " << s.end_time << " s (kinetic energy below " << kRestEnergy << " m g H for " << kRestHold
+          << " s after the motion)\n";
+    } else {
+      out << "still moving at t = " << s.end_time << " s, the cap ([integration] rest_cap; kinetic energy "
+          << s.kinetic_energy_at_end << " J): the residual slide and spin are not settled\n";
+    }
+  }
 }
 
 void write_summary_json3d(const std::filesystem::path& file, const RunReport3D& report) {
@@ -80,6 +95,7 @@ void write_summary_json3d(const std::filesystem::path& file, const RunReport3D& 
   j["status"] = status_name(report.result.summary.status);
   j["tipped_over"] = report.result.summary.status == LaneStatus::tipped_over;
   j["time_base"] = report.motions.time_base;
+  if (report.result.summary.rest_criterion) j["came_to_rest"] = report.result.summary.came_to_rest;
   j["wall_time_s"] = report.wall_seconds;
   std::ofstream out(file);
   if (!out) throw std::runtime_error(file.string() + ": cannot write");
@@ -92,13 +108,14 @@ void write_history_csv3d(const std::filesystem::path& file, const RunReport3D& r
   if (!out) throw std::runtime_error(file.string() + ": cannot write");
   // No comment line (pandas and numpy read the header as it is): x and z are horizontal, y is up
   // (docs/output.md), the run itself is in summary.json beside it.
-  out << "time_s,tilt_rad,tilt_azimuth_rad,spin_rad,rim_contact_azimuth_rad,slide_x_m,slide_z_m,slide_m,uplift_m,"
-         "table_x_m_s2,table_z_m_s2,table_vertical_m_s2\n";
+  out << "time_s,tilt_rad,tilt_azimuth_rad,spin_rad,rim_contact_azimuth_rad,slide_x_m,slide_z_m,slide_m,slip_x_m,"
+         "slip_z_m,slip_m,uplift_m,table_x_m_s2,table_z_m_s2,table_vertical_m_s2\n";
   out << std::setprecision(10);
   for (std::size_t i = 0; i < h.time.size(); ++i) {
     out << h.time[i] << ',' << h.tilt[i] << ',' << h.tilt_azimuth[i] << ',' << h.spin[i] << ',' << h.rim_azimuth[i]
         << ',' << h.slide_x[i] << ',' << h.slide_z[i] << ',' << std::hypot(h.slide_x[i], h.slide_z[i]) << ','
-        << h.uplift[i] << ',' << h.table_x[i] << ',' << h.table_z[i] << ',' << h.table_vertical[i] << '\n';
+        << h.slip_x[i] << ',' << h.slip_z[i] << ',' << std::hypot(h.slip_x[i], h.slip_z[i]) << ',' << h.uplift[i] << ','
+        << h.table_x[i] << ',' << h.table_z[i] << ',' << h.table_vertical[i] << '\n';
   }
 }
 
@@ -132,6 +149,8 @@ void write_run_hdf5_3d(const std::filesystem::path& file, const RunReport3D& rep
     history.write("tilt", h.tilt, "rad");
     history.write("tilt_azimuth", h.tilt_azimuth, "rad");
     history.write("spin", h.spin, "rad");
+    history.write("slip_x", h.slip_x, "m");
+    history.write("slip_z", h.slip_z, "m");
     history.write("rim_contact_azimuth", h.rim_azimuth, "rad");
     history.write("slide_x", h.slide_x, "m");
     history.write("slide_z", h.slide_z, "m");

@@ -1,4 +1,6 @@
-"""Plot of one 3D caskdem run: tilt and sliding against time, and the top of the axis seen from above.
+"""Plot of one 3D caskdem run: tilt, the base centre's walk and the slip (sliding over the floor
+where the cask bears, rolling excluded) and the table's three components against time, and the
+top of the axis seen from above.
 
 Usage: plot_run3d.py RUN.h5 OUT.png
 Reads the layout written by `caskdem run` for a 3D case (docs/output.md, "A 3D run").
@@ -27,6 +29,8 @@ def main(run_file, png_file):
         slide_z = history["slide_z"][:]
         table_x = history["table_x"][:]
         table_z = history["table_z"][:]
+        table_vertical = history["table_vertical"][:]
+        slip = np.hypot(history["slip_x"][:], history["slip_z"][:]) if "slip_x" in history else None
         summary = {key: value for key, value in f["summary"].attrs.items()}
         height = float(f["model"].attrs["height_m"])
         alpha = float(summary["stability_angle_rad"])
@@ -44,13 +48,17 @@ def main(run_file, png_file):
     ax_tilt.axhline(1.0, color="tab:red", ls="--", lw=0.8)
     ax_tilt.set_ylabel(r"tilt / $\alpha$")
     ax_tilt.text(0.01, 0.9, r"$\alpha$ = %.3f rad (dashed)" % alpha, transform=ax_tilt.transAxes, fontsize=8)
-    ax_slide.plot(t, 100.0 * slide_x, lw=0.8, label="x")
-    ax_slide.plot(t, 100.0 * slide_z, lw=0.8, label="z")
-    ax_slide.plot(t, 100.0 * np.hypot(slide_x, slide_z), lw=0.8, color="k", label="|sliding|")
-    ax_slide.set_ylabel("sliding [cm]")
+    ax_slide.plot(t, 100.0 * slide_x, lw=0.8, label="base walk x")
+    ax_slide.plot(t, 100.0 * slide_z, lw=0.8, label="base walk z")
+    ax_slide.plot(t, 100.0 * np.hypot(slide_x, slide_z), lw=0.8, color="k",
+                  label="|base walk| (sliding and rolling)")
+    if slip is not None:
+        ax_slide.plot(t, 100.0 * slip, lw=1.2, color="tab:red", label="|slip| (sliding alone)")
+    ax_slide.set_ylabel("[cm]")
     ax_slide.legend(fontsize=7, loc="upper left")
     ax_table.plot(t, 100.0 * table_x, lw=0.5, label="x")
     ax_table.plot(t, 100.0 * table_z, lw=0.5, label="z")
+    ax_table.plot(t, 100.0 * table_vertical, lw=0.5, label="vertical")
     ax_table.set_ylabel("table acc. [gal]")
     ax_table.set_xlabel("time [s]")
     ax_table.legend(fontsize=7, loc="upper left")

@@ -63,7 +63,7 @@ CaseMotions3D make_motions3d(const MotionSpec& spec, const std::filesystem::path
   if (!spec.pair.empty()) {
     make_set(spec, owner, m);
   } else {
-    m.h1 = make_motion(spec);
+    m.h1 = make_motion(spec, &m.scale_factor);
   }
   return m;
 }
@@ -92,12 +92,23 @@ RunReport3D run_case3d(const Case& c, double output_interval) {
   }
   report.motions = make_case_motions3d(c);
   double duration = c.duration;
+  RunSettings settings{0.0, output_interval};
   if (!(duration > 0.0)) {
     double motion_end = report.motions.h1->duration();
     if (report.motions.h2) motion_end = std::max(motion_end, report.motions.h2->duration());
     if (report.motions.vertical) motion_end = std::max(motion_end, report.motions.vertical->duration());
-    duration = motion_end + c.settle_time;
+    if (c.settle_time_given) {
+      duration = motion_end + c.settle_time;
+    } else {
+      // Until the cask is at rest (a rolling or wobbling cask goes on long after the table has
+      // stopped), at most rest_cap after the motion.
+      duration = motion_end + c.rest_cap;
+      settings.rest_from = motion_end;
+      settings.rest_energy = kRestEnergy * report.parameters.mass * report.model.model.gravity * report.cask.height;
+      settings.rest_hold = kRestHold;
+    }
   }
+  settings.duration = duration;
   const double steps = duration / report.model.model.time_step;
   if (!(duration <= kLongestRun) || !(steps >= 1.0) || !(steps <= kMostSteps)) {
     throw InputError(located(c.file, 0, "the run would last " + number_text(duration) + " s in " + number_text(steps) +
@@ -105,8 +116,7 @@ RunReport3D run_case3d(const Case& c, double output_interval) {
                                         number_text(kMostSteps) + " steps: a unit wrong somewhere?"));
   }
   const auto start = std::chrono::steady_clock::now();
-  report.result = simulate3d(report.model, lane, rest_state3d(report.model, lane), report.motions.excitation(),
-                             {duration, output_interval});
+  report.result = simulate3d(report.model, lane, rest_state3d(report.model, lane), report.motions.excitation(), settings);
   report.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

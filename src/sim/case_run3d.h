@@ -3,6 +3,12 @@
 // cask, contact, friction, damping, integration and limits (model/build3d.h), its motion's
 // components (a horizontal pair and the station's vertical read as one set, or one component),
 // the incidence, the run (sim/simulate3d.h).
+//
+// How long it runs: `duration` when given; else the motion and `settle_time` when that is given;
+// else until the cask is at rest after the motion: its kinetic energy (translation and rotation)
+// below kRestEnergy m g H for kRestHold in a row, at most `rest_cap` (60 s) after the motion. A
+// cask that rolls on its rim or wobbles goes on for tens of seconds after the table stops, and its
+// residual slide and spin are not settled before then.
 
 #include <memory>
 #include <optional>
@@ -13,6 +19,9 @@
 #include "sim/simulate3d.h"
 
 namespace caskdem {
+
+inline constexpr double kRestEnergy = 1e-6;  // of m g H (H the cask's height)
+inline constexpr double kRestHold = 1.0;     // s
 
 struct CaseMotions3D {
   std::unique_ptr<motion::TableMotion> h1, h2, vertical;  // h2 and vertical may be null

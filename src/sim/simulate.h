@@ -19,8 +19,13 @@ struct Excitation {
 };
 
 struct RunSettings {
-  double duration = 0.0;         // s
+  double duration = 0.0;         // s (with a rest criterion: the most the run lasts)
   double output_interval = 0.0;  // s; 0 records no history
+  // The rest criterion (3D case runs, sim/simulate3d.h): from rest_from (s; < 0: none) the run
+  // ends once the cask's kinetic energy has stayed below rest_energy (J) for rest_hold (s).
+  double rest_from = -1.0;
+  double rest_energy = 0.0;
+  double rest_hold = 1.0;
 };
 
 struct TimeHistory {

@@ -33,7 +33,8 @@ const std::string kData = std::string(CASKDEM_SOURCE_DIR) + "/tests/ensemble/dat
 std::vector<std::uint64_t> bits_of(const RealisationOutcome& o) {
   const double fields[] = {double(o.status), o.max_abs_rotation, o.max_abs_slide,
                            o.residual_slide, o.max_uplift,       o.impacts,
-                           o.end_time,       o.instability_time, o.spin};
+                           o.end_time,       o.instability_time, o.spin,
+                           o.max_slip,       o.residual_slip};
   std::vector<std::uint64_t> bits(std::size(fields));
   std::memcpy(bits.data(), fields, sizeof fields);
   return bits;

@@ -101,7 +101,7 @@ struct Fields {
 Fields fields_of(const RealisationOutcome& o) {
   Fields f;
   for (double v : {double(o.status), o.max_abs_rotation, o.max_abs_slide, o.residual_slide, o.max_uplift, o.impacts,
-                   o.end_time, o.instability_time, o.spin}) {
+                   o.end_time, o.instability_time, o.spin, o.max_slip, o.residual_slip}) {
     f.values.push_back(bits(v));
   }
   return f;

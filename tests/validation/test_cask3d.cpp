@@ -344,6 +344,11 @@ TEST(Cask3D, RollsOnItsRimAtTheSteadyPrecessionRate) {
     const double revolutions = turns * std::abs(spin) / rate;
     std::printf("  rim revolutions %.4f against %.4f\n", run.summary.rim_revolutions, revolutions);
     EXPECT_NEAR(run.summary.rim_revolutions / revolutions, 1.0, 0.02) << "beta/alpha = " << ratio;
+    // Rolling without slip: the base centre walks round while the slip (the material's sliding
+    // where the cask bears on the floor) stays under a millimetre.
+    std::printf("  base walk max %.4f m, slip max %.2e m\n", run.summary.max_slide, run.summary.max_slip);
+    EXPECT_LT(run.summary.max_slip, 1e-3) << "beta/alpha = " << ratio;
+    EXPECT_GT(run.summary.max_slide, 20.0 * run.summary.max_slip) << "beta/alpha = " << ratio;
   }
 }
 
@@ -419,6 +424,7 @@ TEST(Cask3D, RollingWithoutSlipDoesNoWork) {
     RecordProperty("energy_loss_" + std::to_string(ratio), std::to_string(-lowest / moving));
     EXPECT_EQ(response.status, 0.0);
     EXPECT_EQ(slipped, 0) << "the test is of rolling without slip";
+    EXPECT_LT(response.max_slip, 1e-3) << "beta/alpha = " << ratio;
     EXPECT_LE(highest, 1e-9 * moving) << "beta/alpha = " << ratio;
     EXPECT_LT(-lowest, 1e-3 * moving) << "beta/alpha = " << ratio;
   }
