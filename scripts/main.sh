@@ -5,8 +5,21 @@ cd "$(dirname "$0")/.."
 scripts/install-deps.sh
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCASKDEM_BUILD_TESTS=OFF -DCASKDEM_BUILD_BENCHMARKS=OFF >/dev/null
 cmake --build build -j"$(nproc)" --target caskdem
+# caskdem on the PATH, as the README's tour writes it: a link in /usr/local/bin (as root), or in
+# ~/.local/bin (which Debian's shells put on the PATH at login when it exists).
+bin=/usr/local/bin
+if [ ! -w "$bin" ]; then
+  bin="$HOME/.local/bin"
+  mkdir -p "$bin"
+fi
+ln -sf "$PWD/build/src/caskdem" "$bin/caskdem"
+case ":$PATH:" in
+  *":$bin:"*) echo "main.sh: caskdem is $bin/caskdem (a link to build/src/caskdem)" ;;
+  *) echo "main.sh: caskdem is $bin/caskdem (a link to build/src/caskdem); $bin is not on this shell's PATH yet" ;;
+esac
 # A fragility analysis on built-in synthetic earthquakes (no downloaded file): results/*.h5 and *.png,
-# then the annual frequency of each limit state at a synthetic site, the 1/3 model's curves taken
-# to the prototype's PGV by the similarity law: results/*-risk.json and *-risk.png
+# with the fragility table beside it (*-fragility.csv and .json), then the annual frequency of each
+# limit state at a synthetic site, the 1/3 model's curves taken to the full-size cask's by the
+# similarity law (the result file records the model's scale): results/*-risk.json and *-risk.png
 build/src/caskdem ensemble ensembles/model-1-3-builtin.toml --out results/model-1-3-builtin.h5
-build/src/caskdem risk results/model-1-3-builtin.h5 --hazard hazard/example-site-pgv.csv --similarity 3
+build/src/caskdem risk results/model-1-3-builtin.h5 --hazard hazard/example-site-pgv.csv

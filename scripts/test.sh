@@ -2,9 +2,10 @@
 # The README's second command: install the dependencies, build, and run the test suite.
 #
 #   scripts/test.sh          the suite (ctest), about 10 minutes on two cores: everything but the
-#                            full diagnoses at shipped settings (label diagnosis-full)
+#                            full diagnoses at shipped settings (label diagnosis-full) and the
+#                            README's tour run line by line (label tour)
 #   scripts/test.sh --full   the full gate, as CI runs it (.ci/run), about 45 minutes on two
-#                            cores: the suite with the full diagnoses, every reader under
+#                            cores: the suite with the full diagnoses and the tour, every reader under
 #                            libFuzzer, the suite again under AddressSanitizer and
 #                            UndefinedBehaviorSanitizer, the ensemble tests under ThreadSanitizer
 set -euo pipefail
@@ -21,7 +22,7 @@ cmake --build build -j"$(nproc)"
 if $full; then
   ctest --test-dir build --output-on-failure --no-tests=error -j"$(nproc)" -LE gpu
 else
-  ctest --test-dir build --output-on-failure --no-tests=error -j"$(nproc)" -LE 'gpu|diagnosis-full'
+  ctest --test-dir build --output-on-failure --no-tests=error -j"$(nproc)" -LE 'gpu|diagnosis-full|tour'
 fi
 # The GPU engine against the CPU, verbose: where no GPU is present each test says why it did not
 # run; where one is, the table of every shipped ensemble's realisations (docs/performance.md).
