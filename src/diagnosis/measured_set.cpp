@@ -1,6 +1,7 @@
 #include "diagnosis/measured_set.h"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -78,6 +79,32 @@ Case read_specimen(const std::filesystem::path& specimen, DiagnosisSettings* set
   return c;
 }
 
+namespace {
+
+// A cask rocked when its rotation passed this share of alpha (far above a standing cask's
+// rotation on its springs).
+constexpr double kRockedFraction = 0.1;
+
+// A table in SI too weak for the rocking it caused: rocking starts at g tan(alpha), and a column
+// in g reads about ten times smaller. Reported on the test, as its other imperfections are.
+void report_table_unit(MeasuredTest& test, double alpha, double gravity) {
+  if (test.table_unit_declared || !(alpha > 0.0)) return;
+  double table = 0.0, rotation = 0.0;
+  for (double a : test.table_acceleration)
+    if (std::isfinite(a)) table = std::max(table, std::abs(a));
+  for (std::size_t k = 0; k < test.rotation.size(); ++k)
+    if (test.rotation_valid[k]) rotation = std::max(rotation, std::abs(test.rotation[k]));
+  const double onset = gravity * std::tan(alpha);
+  if (rotation > kRockedFraction * alpha && table < 0.5 * onset) {
+    test.issues.push_back(test.file.filename().string() + ": table_acc: peaks at " + number_text(table) +
+                          " m/s^2, under half of g tan(alpha) = " + number_text(onset) +
+                          " m/s^2, the least that makes this cask rock, yet theta reaches " + number_text(rotation) +
+                          " rad: a column in g? declare it in the header, e.g. 'table_acc [g]'");
+  }
+}
+
+}  // namespace
+
 MeasuredSet read_measured_set(const std::filesystem::path& directory) {
   MeasuredSet set;
   set.directory = directory;
@@ -121,14 +148,17 @@ MeasuredSet read_measured_set(const std::filesystem::path& directory) {
   // mechanism its section cannot take) is refused now, naming its file, not minutes into a fit.
   std::vector<std::vector<Mechanism>> variants = {{}};
   for (Mechanism m : all_mechanisms()) variants.push_back({m});
+  double alpha = 0.0, gravity = 0.0;
   for (const std::vector<Mechanism>& mechanisms : variants) {
     try {
-      (void)ModelVariant(set.specimen, mechanisms, set.vertical_measured);
+      const ModelVariant variant(set.specimen, mechanisms, set.vertical_measured);
+      if (mechanisms.empty()) alpha = variant.model().stability_angle, gravity = variant.model().gravity;
     } catch (const std::invalid_argument& e) {
       throw InputError(located(specimen, 0, std::string(e.what()) +
                                                 (mechanisms.empty() ? "" : " (with " + mechanism_name(mechanisms[0]) + ")")));
     }
   }
+  for (MeasuredTest& test : set.tests) report_table_unit(test, alpha, gravity);
   return set;
 }
 

@@ -85,6 +85,11 @@ constexpr std::array<ChannelSpec, kChannelCount> kChannels{{
     {"theta_dot", "rad/s", false, 1e3, "1000 rad/s"},
 }};
 
+// Undeclared SI columns beyond these are reported as likely in other units (a slide in mm, a
+// rotation in degrees); they are read as they are.
+constexpr double kLargestPlausibleSlide = 1.0;     // m
+constexpr double kLargestPlausibleRotation = 1.0;  // rad
+
 // A smaller sampling step is not a shaking-table record (t in other units, or a corrupt column).
 constexpr double kSmallestSamplingStep = 1e-6;
 
@@ -184,13 +189,53 @@ struct Layout {
   char separator = ',';
   std::size_t field_count = 0;
   std::array<std::optional<std::size_t>, kChannelCount> column;  // field index of each channel
+  std::array<double, kChannelCount> to_si{1.0, 1.0, 1.0, 1.0, 1.0, 1.0};  // the declared unit's SI value
+  std::array<bool, kChannelCount> declared{};                            // a unit in the header
 };
 
-std::optional<Channel> channel_named(std::string_view name) {
-  const std::string key = lower_case(name);
+// A header name and the unit it may declare: "table_acc [g]" or "table_acc (g)".
+struct NamedColumn {
+  std::string_view name, unit;
+};
+NamedColumn split_unit(std::string_view field) {
+  const auto open = field.find_first_of("[(");
+  if (open == std::string_view::npos) return {field, {}};
+  const auto close = field.find_first_of("])", open);
+  std::string_view name = field.substr(0, open), unit = field.substr(open + 1, close == std::string_view::npos
+                                                                                    ? std::string_view::npos
+                                                                                    : close - open - 1);
+  while (!name.empty() && name.back() == ' ') name.remove_suffix(1);
+  while (!unit.empty() && unit.front() == ' ') unit.remove_prefix(1);
+  while (!unit.empty() && unit.back() == ' ') unit.remove_suffix(1);
+  return {name, unit};
+}
+
+std::optional<Channel> channel_named(std::string_view field) {
+  const std::string key = lower_case(split_unit(field).name);
   for (std::size_t c = 0; c < kChannelCount; ++c)
     if (kChannels[c].name == key) return static_cast<Channel>(c);
   return std::nullopt;
+}
+
+// The units a channel may be declared in, with their SI values.
+struct Unit {
+  std::string_view name;
+  double si;
+};
+std::vector<Unit> units_of(Channel channel) {
+  constexpr double degree = 3.141592653589793 / 180.0;
+  switch (channel) {
+    case kTime: return {{"s", 1.0}, {"ms", 1e-3}};
+    case kTable:
+    case kVertical:
+      return {{"m/s^2", 1.0}, {"m/s2", 1.0}, {"g", 9.80665}, {"gal", 0.01}, {"cm/s^2", 0.01}, {"cm/s2", 0.01},
+              {"mm/s^2", 1e-3}};
+    case kRotation: return {{"rad", 1.0}, {"mrad", 1e-3}, {"deg", degree}};
+    case kSlide: return {{"m", 1.0}, {"cm", 0.01}, {"mm", 1e-3}};
+    case kAngularVelocity: return {{"rad/s", 1.0}, {"deg/s", degree}};
+    case kChannelCount: break;
+  }
+  return {};
 }
 
 std::string expected_columns() {
@@ -213,6 +258,18 @@ Layout parse_header(Reporter& report, long line_number, std::string_view line) {
                                    std::to_string(*layout.column[*channel] + 1) + " and " + std::to_string(i + 1) +
                                    "); expected each column once");
     layout.column[*channel] = i;
+    const std::string_view unit = split_unit(names[i]).unit;
+    if (unit.empty()) continue;
+    const std::vector<Unit> units = units_of(*channel);
+    const auto known = std::find_if(units.begin(), units.end(), [&](const Unit& u) { return u.name == unit; });
+    if (known == units.end()) {
+      std::string list;
+      for (const Unit& u : units) list += (list.empty() ? "" : ", ") + std::string(u.name);
+      report.fail(line_number, "the unit " + in_quotes(unit) + " of the column " + in_quotes(kChannels[*channel].name) +
+                                   "; expected one of " + list);
+    }
+    layout.to_si[*channel] = known->si;
+    layout.declared[*channel] = true;
   }
 
   std::vector<std::string_view> missing;
@@ -253,9 +310,10 @@ struct Columns {
 
 bool is_missing_text(std::string_view field) { return field.empty() || lower_case(field) == "nan"; }
 
-double parse_value(const Reporter& report, long line_number, Channel channel, std::string_view field) {
+double parse_value(const Reporter& report, long line_number, Channel channel, std::string_view field, double to_si) {
   if (is_missing_text(field)) return kMissing;
-  const auto value = parse_double(field);
+  auto value = parse_double(field);
+  if (value) *value *= to_si;
   const std::string found = "found " + in_quotes(field) + " in the column " + in_quotes(kChannels[channel].name);
   // A ';'-separated file from a spreadsheet may use decimal commas: say so.
   const std::string hint = field.find(',') != std::string_view::npos ? " (with a decimal point, not a comma)" : "";
@@ -264,8 +322,9 @@ double parse_value(const Reporter& report, long line_number, Channel channel, st
   if (!std::isfinite(*value)) report.fail(line_number, found + "; expected a finite number");
   const ChannelSpec& spec = kChannels[channel];
   if (std::abs(*value) > spec.largest)
-    report.fail(line_number, found + "; expected at most " +
-                                 std::string(spec.largest_text) + " in magnitude (are the units SI?)");
+    report.fail(line_number, found + "; expected at most " + std::string(spec.largest_text) +
+                                 " in magnitude (SI, unless the header declares another unit, e.g. '" +
+                                 std::string(spec.name) + " [" + std::string(units_of(channel).back().name) + "]')");
   return *value;
 }
 
@@ -292,7 +351,8 @@ Columns parse_rows(const Reporter& report, const std::vector<std::string>& lines
                                    separator_name(layout.separator));
     for (std::size_t c = 0; c < kChannelCount; ++c)
       if (layout.column[c])
-        columns.values[c].push_back(parse_value(report, line_number, static_cast<Channel>(c), fields[*layout.column[c]]));
+        columns.values[c].push_back(
+            parse_value(report, line_number, static_cast<Channel>(c), fields[*layout.column[c]], layout.to_si[c]));
     columns.line.push_back(line_number);
     check_time(report, columns);
   }
@@ -652,6 +712,23 @@ MeasuredTest read_measured_test(const std::filesystem::path& csv) {
   if (!rotation.usable() && !slide.usable())
     report.fail(0, "neither theta nor slide has a usable sample (missing, constant or clipped throughout); expected "
                    "at least one response channel to compare a simulation with");
+  // SI assumed where no unit was declared: a value no cask on a table shows in SI but would in
+  // another unit is reported with the header that declares it.
+  const auto peak = [](const std::vector<double>& values) {
+    double p = 0.0;
+    for (double v : values)
+      if (std::isfinite(v)) p = std::max(p, std::abs(v));
+    return p;
+  };
+  if (!layout.declared[kSlide] && peak(slide.values) > kLargestPlausibleSlide) {
+    report.issue(kSlide, "peaks at " + with_unit(peak(slide.values), kSlide) + ", further than a cask slides on a "
+                         "shaking table: a column in mm or cm? declare it in the header, e.g. 'slide [mm]'");
+  }
+  if (!layout.declared[kRotation] && peak(rotation.values) > kLargestPlausibleRotation) {
+    report.issue(kRotation, "peaks at " + with_unit(peak(rotation.values), kRotation) + ", beyond a radian: a column in "
+                            "degrees? declare it in the header, e.g. 'theta [deg]'");
+  }
+  test.table_unit_declared = layout.declared[kTable];
   test.rotation = std::move(rotation.values);
   test.rotation_valid = std::move(rotation.valid);
   test.slide = std::move(slide.values);

@@ -1,9 +1,12 @@
 #pragma once
 // One measured test (a shaking-table run or a field record) as users bring it: a CSV file
-// with a header row and SI units,
+// with a header row,
 //   t (s), table_acc (m/s^2), theta (rad), slide (m)            required
 //   theta_dot (rad/s), table_acc_v (m/s^2)                     optional
-// in any column order. Real data are imperfect, and each imperfection is reported, not
+// in any column order, in SI units unless the header declares another after a name, in brackets
+// or parentheses: "table_acc [g]", "slide (mm)", "theta [deg]" (docs/measured-data.md lists
+// them). A column in SI that looks like another unit (a slide of metres no table holds, a
+// rotation beyond a radian, a table too weak for the rocking it caused) is reported. Real data are imperfect, and each imperfection is reported, not
 // crashed on: irregular sampling is resampled onto a uniform grid; gaps (NaN or empty
 // fields) in a response channel are masked, and short gaps in the table channel (the input)
 // are bridged by linear interpolation; samples of a clipped channel (flat at its extreme)
@@ -31,6 +34,7 @@ struct MeasuredTest {
   std::vector<double> vertical_table_acceleration;  // m/s^2, when has_vertical, gaps bridged
   bool has_angular_velocity = false;
   bool has_vertical = false;
+  bool table_unit_declared = false;  // the header named table_acc's unit (else SI was assumed)
   // 1 where the sample may be compared with a simulation; 0 in gaps, clipped or dead channels.
   // Where the mask is 0 the value is NaN in a gap and the value read when clipped or dead.
   // angular_velocity(_valid) and vertical_table_acceleration are empty unless has_angular_velocity

@@ -185,6 +185,45 @@ TEST_F(MeasuredTestFiles, SemicolonAndTabSeparatorsAreAccepted) {
   }
 }
 
+// A header may declare a column's unit after its name; the values are read into SI.
+TEST_F(MeasuredTestFiles, DeclaredUnitsAreReadIntoSi) {
+  const double g = 9.80665, degree = std::numbers::pi / 180.0;
+  const std::vector<Column> columns = {
+      column_of("t [ms]", [](double t) { return 1000.0 * t; }),
+      column_of("table_acc [g]", [](double t) { return table_of(t) / 9.80665; }),
+      column_of("theta (deg)", [](double t) { return theta_of(t) / (std::numbers::pi / 180.0); }),
+      column_of("slide [mm]", [](double t) { return 1000.0 * slide_of(t); })};
+  const MeasuredTest test = read_measured_test(write("units.csv", csv_text(columns, uniform_times(rows, exact_step))));
+  EXPECT_THAT(test.issues, IsEmpty());
+  EXPECT_TRUE(test.table_unit_declared);
+  EXPECT_NEAR(test.time_step, exact_step, 1e-15);
+  for (std::size_t k = 0; k < rows; ++k) {
+    const double t = static_cast<double>(k) * exact_step;
+    EXPECT_NEAR(test.table_acceleration[k], table_of(t), 1e-12 * g);
+    EXPECT_NEAR(test.rotation[k], theta_of(t), 1e-14 * degree);
+    EXPECT_NEAR(test.slide[k], slide_of(t), 1e-15);
+  }
+}
+
+TEST_F(MeasuredTestFiles, AnUnknownUnitIsRefusedAtTheHeader) {
+  auto columns = required_columns();
+  columns[1].name = "table_acc [furlong/s^2]";
+  const auto file = write("furlong.csv", csv_text(columns, uniform_times(rows, exact_step)));
+  EXPECT_THAT(error_of(file), AllOf(HasSubstr(file.string() + ":1:"), HasSubstr("the unit 'furlong/s^2' of the column "
+                                                                                "'table_acc'; expected one of m/s^2")));
+}
+
+// Undeclared columns read as SI that no cask on a table shows in SI, but would in mm or degrees,
+// are reported with the header that declares them; the values are kept as read.
+TEST_F(MeasuredTestFiles, SiColumnsThatLookLikeOtherUnitsAreReported) {
+  auto columns = replacing(required_columns(), column_of("slide", [](double t) { return 1000.0 * slide_of(t) + 2.0; }));
+  const MeasuredTest mm = read_measured_test(write("mm.csv", csv_text(columns, uniform_times(rows, exact_step))));
+  EXPECT_THAT(mm.issues, ElementsAre(AllOf(HasSubstr("mm.csv: slide: peaks at"), HasSubstr("'slide [mm]'"))));
+  columns = replacing(required_columns(), column_of("theta", [](double t) { return 3.0 * std::sin(t) + 2.0; }));
+  const MeasuredTest degrees = read_measured_test(write("deg.csv", csv_text(columns, uniform_times(rows, exact_step))));
+  EXPECT_THAT(degrees.issues, ElementsAre(AllOf(HasSubstr("deg.csv: theta: peaks at"), HasSubstr("'theta [deg]'"))));
+}
+
 TEST_F(MeasuredTestFiles, TheFirstTimeBecomesZero) {
   // Times 2.5 + k/64 are exact too; the values belong to the file's times.
   const double start = 2.5;
