@@ -110,7 +110,7 @@ void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const
     for (const std::string& line : limit_state_lines(plan, s)) std::cout << line << "\n";
     if (spec.outer_count() > 1) {
       const fragility::NestedFit& n = s.nested;
-      std::cout << std::setw(20) << "  family";
+      std::cout << std::left << std::setw(20) << "  family";
       if (n.fitted) {
         std::cout << "A_m " << intensity_text(spec.measure, n.median) << " [" << intensity_text(spec.measure, n.median_low)
                   << ", " << intensity_text(spec.measure, n.median_high) << "], beta_R " << n.beta_r << " ["
