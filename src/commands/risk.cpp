@@ -200,8 +200,11 @@ std::vector<NamedFragility> fragilities_of_result(const std::string& file, const
   return out;
 }
 
+// Four significant digits: a capacity or a hazard level is not known better.
 std::string intensity_text(double si, const IntensityMeasure& m) {
-  return number_text(si / risk::display_unit_to_si(m)) + " " + risk::display_unit(m);
+  std::ostringstream out;
+  out << std::setprecision(4) << si / risk::display_unit_to_si(m) << " " << risk::display_unit(m);
+  return out.str();
 }
 
 void run_risk(const RiskOptions& o, bool beta_given, bool beta_r_given, bool beta_u_given) {

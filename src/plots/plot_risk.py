@@ -76,9 +76,9 @@ def main(json_file, png_file):
     middle.set_xscale("log")
     middle.set_xlabel(textwrap.fill(label, 60), fontsize=9)
     middle.set_ylabel("probability of the limit state")
-    middle.set_title("fragility: mean curve (solid; dashed: fit rejected)" +
-                     (", 50 % member (dashed), 5 and 95 % (dotted)" if sampled else "; beta_U not sampled") +
-                     "; dotted vertical: the lower HCLPF", fontsize=8)
+    middle.set_title("fragility: mean curves (dashed: fit rejected)" +
+                     ("; thin: 50 % member (dashed), 5 and 95 % (dotted)" if sampled else "; beta_U not sampled") +
+                     "\ndotted vertical lines: the lower HCLPF", fontsize=8)
     middle.grid(True, which="both", alpha=0.3)
     right.set_xscale("log")
     right.set_xlabel(textwrap.fill(label, 60), fontsize=9)
