@@ -104,5 +104,30 @@ TEST_F(OutputFormats, EveryNumericHdf5DatasetStatesItsUnit) {
   }
 }
 
+// The recipe of docs/output.md ("Reading them in Python") runs as written, in a directory whose
+// results/ holds what the main job and the El Centro case write there.
+TEST_F(OutputFormats, TheDocsPythonRecipeRuns) {
+  const std::string source = CASKDEM_SOURCE_DIR;
+  const std::string docs = testing::file_text(source + "/docs/output.md");
+  const auto start = docs.find("```python", docs.find("## Reading them in Python"));
+  ASSERT_NE(start, std::string::npos) << "no recipe in docs/output.md";
+  const auto body = docs.find('\n', start) + 1;
+  const std::string recipe = docs.substr(body, docs.find("```", body) - body);
+  const auto results = dir_ / "results";
+  ASSERT_EQ(run_caskdem("run " + source + "/cases/model-1-3-elcentro-400gal.toml --no-plot --out " +
+                        (results / "model-1-3-elcentro-400gal").string())
+                .status,
+            0);
+  const auto ensemble = variant_of(source + "/ensembles/model-1-3-builtin.toml", "model-1-3-builtin.toml",
+                                   "realisations = 80", "realisations = 16");
+  ASSERT_EQ(run_caskdem("ensemble " + ensemble.string() + " --quiet --no-plot --out " +
+                        (results / "model-1-3-builtin.h5").string())
+                .status,
+            0);
+  const auto script = write("recipe.py", recipe);
+  const testing::Outcome ran = run_shell("cd " + dir_.string() + " && /usr/bin/python3 " + script.string());
+  EXPECT_EQ(ran.status, 0) << recipe << "\n" << ran.output;
+}
+
 }  // namespace
 }  // namespace caskdem
