@@ -478,8 +478,9 @@ void require_planar(const Case& c, const std::string& command) {
   }
 }
 
-Case load_case(const std::filesystem::path& file) {
-  const toml::table document = parse_toml_file(file);
+Case load_case(const std::filesystem::path& file) { return read_case(parse_toml_file(file), file); }
+
+Case read_case(const toml::table& document, const std::filesystem::path& file) {
   TableReader root(document, file, "", 0, &case_file_keys());
   Case c;
   c.file = file;

@@ -97,6 +97,9 @@ struct Case {
 };
 
 Case load_case(const std::filesystem::path& file);
+// A case from a parsed document (the Python module's keyword arguments): `file` names it in
+// messages and its folder is where relative paths start.
+Case read_case(const toml::table& document, const std::filesystem::path& file);
 
 // Every key load_case reads, table by table; reading any other is a program error.
 const KeySchema& case_file_keys();

@@ -77,10 +77,12 @@ void TableReader::missing(std::string_view key, const std::string& expected) con
   for (const auto& [k, value] : table_)
     if (read_.count(k.str()) == 0) unread.emplace_back(k.str());
   const auto meant = likely_meant(key, unread);
-  throw InputError(located(file_, line_, "missing key " + key_path(key) + ": expected " + expected +
-                                             (meant ? " (is " + *meant + ", line " + std::to_string(line_of(*meant)) +
-                                                          ", a misspelling of it?)"
-                                                    : "")));
+  throw InputError(
+      located(file_, line_,
+              "missing key " + key_path(key) + ": expected " + expected +
+                  (meant ? " (is " + *meant + (line_of(*meant) > 0 ? ", line " + std::to_string(line_of(*meant)) : "") +
+                               ", a misspelling of it?)"
+                         : "")));
 }
 
 void TableReader::fail(std::string_view key, const std::string& message) const {

@@ -69,6 +69,13 @@ struct NamedFragility {
   double test_p = 1.0;
 };
 
+NamedFragility named(std::string name, const risk::LognormalFragility& fragility) {
+  NamedFragility f;
+  f.name = std::move(name);
+  f.fragility = fragility;
+  return f;
+}
+
 struct RiskOptions {
   std::string result, hazard, format = "automatic", imt, site, median, measure, design_basis, json, plot;
   double beta = 0.0, beta_r = 0.0, beta_u = 0.0, years = 50.0, target = 1e-5, similarity = 1.0;
@@ -166,14 +173,14 @@ std::vector<NamedFragility> fragilities_of_result(const std::string& file, const
         if (e.integer_attribute("fitted") != 0) {
           if (beta_u > 0.0)
             throw InputError("--beta-u: " + file + " separates beta_U already (its ensemble has epistemic parameters)");
-          out.push_back(
-              {name, {e.double_attribute("median") * to_si, e.double_attribute("beta_r"), e.double_attribute("beta_u")}});
+          out.push_back(named(name, {e.double_attribute("median") * to_si, e.double_attribute("beta_r"),
+                                     e.double_attribute("beta_u")}));
           continue;
         }
         notes.push_back("fragility  " + name + ": no epistemic family (" + e.string_attribute("not_fitted_because") +
                         "); the pooled curve, taken as aleatory");
       }
-      out.push_back({name, {g.double_attribute("median") * to_si, g.double_attribute("log_std"), beta_u}});
+      out.push_back(named(name, {g.double_attribute("median") * to_si, g.double_attribute("log_std"), beta_u}));
     }
     // The pooled curve's test stands for the family too: the family is fitted to the same stripes.
     for (NamedFragility& f : out) {
@@ -268,8 +275,8 @@ void run_risk(const RiskOptions& o, bool beta_given, bool beta_r_given, bool bet
                        (similarity != 1.0 ? " (as the prototype's)" : "") + " but the hazard curve " + o.hazard +
                        " is of " + intensity_measure_name(im) + "; expected a hazard curve of " +
                        intensity_measure_name(model));
-    fragilities.push_back(
-        {"given", {intensity_option("--median", o.median, im) * factor, beta_given ? o.beta : o.beta_r, o.beta_u}});
+    fragilities.push_back(named(
+        "given", {intensity_option("--median", o.median, im) * factor, beta_given ? o.beta : o.beta_r, o.beta_u}));
     try {
       risk::check_fragility(fragilities.back().fragility);
     } catch (const std::invalid_argument& e) {

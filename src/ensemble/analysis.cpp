@@ -95,11 +95,12 @@ std::vector<LimitStateSummary> analyse(const EnsemblePlan& plan, const EnsembleR
                                      [&](double level) { return intensity_text(spec.measure, level); });
     if (s.fit.fitted) {
       // Each limit state gets its own stream of bootstrap numbers.
-      s.band = fragility::bootstrap_band(data, grid, spec.bootstrap_replicates, spec.confidence, spec.seed + 7919 * (l + 1));
+      s.band =
+          fragility::bootstrap_band(data, grid, spec.bootstrap_replicates, spec.confidence, band_seed(spec.seed, l));
       s.misfit = fragility::misfit(s.fit, s.stripes);
       // The measures in turn, the ensemble's own first: its test is the curve's.
       // One bootstrap stream for every limit state: two states with the same stripes get the same test.
-      s.measures = fit_measures(plan, measures, data, fragility::kFitTestReplicates, spec.seed + 6151);
+      s.measures = fit_measures(plan, measures, data, fragility::kFitTestReplicates, fit_test_seed(spec.seed));
       s.test = s.measures.front().test;
     }
     s.by_motion = data;

@@ -53,6 +53,12 @@ struct LimitStateSummary {
 
 bool exceeds(const LimitState& limit_state, const EnsembleResults& results, std::int64_t index);
 
+// The bootstrap streams of the analysis, keyed by the ensemble's seed: limit state l's band, and
+// the fit tests (one stream for every limit state, so that two states with the same stripes get
+// the same test; measure k's test then its own, fit_measures).
+inline std::uint64_t band_seed(std::uint64_t seed, std::size_t limit_state) { return seed + 7919 * (limit_state + 1); }
+inline std::uint64_t fit_test_seed(std::uint64_t seed) { return seed + 6151; }
+
 std::vector<LimitStateSummary> analyse(const EnsemblePlan& plan, const EnsembleResults& results);
 
 }  // namespace caskdem

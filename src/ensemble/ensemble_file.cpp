@@ -165,16 +165,18 @@ const KeySchema& ensemble_file_keys() {
 
 EnsembleSpec load_ensemble(const std::filesystem::path& file) {
   const toml::table document = parse_toml_file(file);
+  std::ifstream in(file);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return read_ensemble(document, file, text.str());
+}
+
+EnsembleSpec read_ensemble(const toml::table& document, const std::filesystem::path& file, const std::string& text) {
   TableReader root(document, file, "", 0, &ensemble_file_keys());
   EnsembleSpec e;
   e.file = file;
   e.name = file.stem().string();
-  {
-    std::ifstream in(file);
-    std::ostringstream text;
-    text << in.rdbuf();
-    e.toml_text = text.str();
-  }
+  e.toml_text = text;
   e.title = root.optional_string("title").value_or(e.name);
 
   Case& c = e.base;

@@ -89,6 +89,9 @@ struct EnsembleSpec {
 };
 
 EnsembleSpec load_ensemble(const std::filesystem::path& file);
+// An ensemble from a parsed document (the Python module's keyword arguments): `file` names it in
+// messages and its folder is where relative paths start; `text` is what the result file stores.
+EnsembleSpec read_ensemble(const toml::table& document, const std::filesystem::path& file, const std::string& text);
 
 // Every key load_ensemble reads, table by table; reading any other is a program error.
 const KeySchema& ensemble_file_keys();

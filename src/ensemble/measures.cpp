@@ -98,7 +98,7 @@ std::vector<MeasureFit> fit_measures(const EnsemblePlan& plan, const MeasureSet&
       f.design = set.design[k];
       const std::vector<fragility::Cell> cells = cells_of(plan, set, k, data);
       f.fit = fragility::fit_cells(cells);
-      f.test = fragility::test_fit(f.fit, cells, replicates, seed + 31 * static_cast<std::uint64_t>(k + 1));
+      f.test = fragility::test_fit(f.fit, cells, replicates, measure_seed(seed, k));
     } catch (...) {
 #pragma omp critical
       if (!failure) failure = std::current_exception();

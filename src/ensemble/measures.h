@@ -48,6 +48,8 @@ struct MeasureFit {
 // the set; `seed` keys the tests' bootstraps.
 std::vector<MeasureFit> fit_measures(const EnsemblePlan& plan, const MeasureSet& set,
                                      const fragility::StripeData& data, int replicates, std::uint64_t seed);
+// Measure k's stream among those keyed by `seed`.
+inline std::uint64_t measure_seed(std::uint64_t seed, int k) { return seed + 31 * static_cast<std::uint64_t>(k + 1); }
 
 // The cells of one measure (index in the set).
 std::vector<fragility::Cell> cells_of(const EnsemblePlan& plan, const MeasureSet& set, int measure,

@@ -19,6 +19,7 @@ namespace caskdem {
 namespace {
 
 constexpr int kChunk = 2048;
+constexpr int kCalibrationPoints = 48;  // damping ratios of the restitution curve
 
 int dimension_index(const std::string& name) {
   const auto& names = uncertain_parameter_names();
@@ -122,6 +123,7 @@ EnsemblePlan::EnsemblePlan(const EnsembleSpec& spec, InstructionSet isa)
   // realisation needs, so that no realisation's result depends on the block it lands in.
   double lightest = nominal_.mass;
   if (auto it = spec_.uncertain.find("mass"); it != spec_.uncertain.end()) lightest = it->second.lowest();
+  lightest_mass_ = lightest;
   try {
     if (three_d()) {
       // The solid cylinder's mass properties, then its step from the lightest realisation.
@@ -195,7 +197,7 @@ EnsemblePlan::EnsemblePlan(const EnsembleSpec& spec, InstructionSet isa)
 
   if (restitution_uncertain()) {
     try {
-      calibration_ = compute_calibration_curve(model_, model_spec_, nominal_, spec_.base.free_vibration, isa, 48);
+      calibrate(isa);
     } catch (const std::exception& e) {
       fail(e.what());
     }
@@ -239,7 +241,18 @@ double EnsemblePlan::intensity_of(int m, double scale) const {
   return 0.0;
 }
 
+void EnsemblePlan::calibrate(InstructionSet isa) {
+  if (!calibration_.restitution.empty()) return;
+  calibration_ =
+      compute_calibration_curve(model_, model_spec_, nominal_, spec_.base.free_vibration, isa, kCalibrationPoints);
+}
+
+void EnsemblePlan::set_realisations(std::vector<RealisationInput> inputs) {
+  chosen_ = std::make_shared<const std::vector<RealisationInput>>(std::move(inputs));
+}
+
 RealisationInput EnsemblePlan::realisation(std::int64_t index) const {
+  if (chosen_) return (*chosen_)[index];
   RealisationInput in;
   in.index = index;
   const std::int64_t n = spec_.realisations_per_stripe;

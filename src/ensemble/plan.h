@@ -75,7 +75,8 @@ class EnsemblePlan {
   const EnsembleSpec& spec() const { return spec_; }
   const Model& model() const { return model_; }
   const ModelSpec& model_spec() const { return model_spec_; }
-  std::int64_t size() const { return spec_.realisation_count(); }
+  // The file's realisations, or the ones given to set_realisations.
+  std::int64_t size() const { return chosen_ ? static_cast<std::int64_t>(chosen_->size()) : spec_.realisation_count(); }
   int motion_count() const { return static_cast<int>(motions_.size()); }
   const motion::TableMotion& motion(int m) const { return *motions_[m]; }  // 3D: its H1
   bool three_d() const { return spec_.three_d(); }
@@ -85,8 +86,16 @@ class EnsemblePlan {
   const motion::TableMotion* component(int m, int c) const;
   const MotionIntensity& intensity(int m) const { return intensities_[m]; }
   double run_duration(int m) const;  // motion duration + settle time
+  // Empty unless restitution is uncertain or calibrate() was called.
   const CalibrationCurve& calibration() const { return calibration_; }
   bool restitution_uncertain() const { return spec_.uncertain.count("restitution") > 0; }
+  // Computes the calibration curve when the file did not need one (a caller's restitutions),
+  // as the constructor would have: the same curve, whichever way it came.
+  void calibrate(InstructionSet isa);
+  // The nominal cask's parameters (the file's, before sampling), and the lightest mass the
+  // ensemble's one time step was chosen for.
+  const RealisationParameters& nominal() const { return nominal_; }
+  double lightest_mass() const { return lightest_mass_; }
   double stability_angle() const { return model_.stability_angle; }
   double frequency_parameter() const { return frequency_parameter_; }  // p of the rigid equivalent
   // N when every motion is a prototype's applied to a 1/N model (its similarity_scale), so that
@@ -94,12 +103,19 @@ class EnsemblePlan {
   double model_scale() const;
 
   RealisationInput realisation(std::int64_t index) const;
-  int outer_of(std::int64_t index) const { return static_cast<int>(index / spec_.realisations_per_outer_point()); }
+  int outer_of(std::int64_t index) const {
+    return chosen_ ? (*chosen_)[index].outer : static_cast<int>(index / spec_.realisations_per_outer_point());
+  }
   // realisation(index).motion, without sampling its parameters.
   int motion_of(std::int64_t index) const {
+    if (chosen_) return (*chosen_)[index].motion;
     const std::int64_t position = index % spec_.realisations_per_outer_point() % spec_.realisations_per_stripe;
     return static_cast<int>(position % motion_count());
   }
+  // Replaces the file's sampled realisations by a caller's (ensemble/rollout.h, which checks
+  // them), realisation i being inputs[i]: every engine runs them as it runs the file's. A copy
+  // of a plan shares its motions, so a plan per call of the caller's costs no reading.
+  void set_realisations(std::vector<RealisationInput> inputs);
   // The motion's intensity (of the scaled motion as applied) for a given scale factor.
   double intensity_of(int motion, double scale_factor) const;
 
@@ -108,14 +124,16 @@ class EnsemblePlan {
   ModelSpec model_spec_;
   RealisationParameters nominal_;
   Model model_;
-  std::vector<std::unique_ptr<motion::TableMotion>> motions_;
-  std::vector<std::unique_ptr<motion::TableMotion>> second_horizontal_, vertical_;  // 3D
+  double lightest_mass_ = 0.0;
+  std::vector<std::shared_ptr<const motion::TableMotion>> motions_;
+  std::vector<std::shared_ptr<const motion::TableMotion>> second_horizontal_, vertical_;  // 3D
   Model3D model3d_;
   std::vector<MotionIntensity> intensities_;
   CalibrationCurve calibration_;
   Sampler sampler_;
   Sampler outer_sampler_;
   double frequency_parameter_ = 0.0;
+  std::shared_ptr<const std::vector<RealisationInput>> chosen_;  // null: the file's
 };
 
 }  // namespace caskdem

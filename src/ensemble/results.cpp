@@ -113,6 +113,18 @@ void EnsembleResults::record(std::int64_t i, const RealisationOutcome& o, double
   }
 }
 
+std::vector<EnsembleResults::Column> EnsembleResults::columns() const {
+  std::vector<Column> out;
+  auto& self = const_cast<EnsembleResults&>(*this);  // the visitors take mutable columns; none is changed
+  for_each_integer(self, [&](const char* name, std::vector<std::int64_t>& v) {
+    out.push_back({name, "1", nullptr, &v});  // indices, the status code and counts
+  });
+  for_each_double(self, [&](const char* name, std::vector<double>& v, const char* unit) {
+    out.push_back({name, unit, &v, nullptr});
+  });
+  return out;
+}
+
 std::int64_t EnsembleResults::completed_count() const {
   std::int64_t count = 0;
   for (std::uint8_t c : completed) count += c;

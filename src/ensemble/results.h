@@ -41,6 +41,14 @@ struct EnsembleResults {
 
   EnsembleResults() = default;
   explicit EnsembleResults(const EnsemblePlan& plan);
+  // Every per-realisation column as the file names it, with its SI unit ("1": none): a double
+  // column or an integer one (stripe, motion, status, impacts).
+  struct Column {
+    std::string name, unit;
+    const std::vector<double>* real = nullptr;
+    const std::vector<std::int64_t>* integer = nullptr;
+  };
+  std::vector<Column> columns() const;
   void record(std::int64_t index, const RealisationOutcome& outcome, double stability_angle);
   std::int64_t completed_count() const;
   std::vector<std::int64_t> pending() const;

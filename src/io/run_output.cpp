@@ -80,25 +80,44 @@ void write_summary_json(const std::filesystem::path& file, const RunReport& repo
   out << summary_json(report).dump(2) << "\n";
 }
 
-void write_history_csv(const std::filesystem::path& file, const RunReport& report) {
+std::string summary_json_text(const RunReport& report) { return summary_json(report).dump(2); }
+
+std::vector<HistoryColumn> history_columns(const RunReport& report) {
   const TimeHistory& h = report.result.history;
+  std::vector<HistoryColumn> columns = {{"time_s", "s", h.time},
+                                        {"rotation_rad", "rad", h.rotation},
+                                        {"angular_velocity_rad_s", "rad/s", h.angular_velocity},
+                                        {"slide_m", "m", h.slide},
+                                        {"uplift_m", "m", h.uplift},
+                                        {"table_acceleration_m_s2", "m/s^2", h.table_acceleration},
+                                        {"table_velocity_m_s", "m/s", h.table_velocity},
+                                        {"table_displacement_m", "m", h.table_displacement},
+                                        {"table_vertical_acceleration_m_s2", "m/s^2", h.table_vertical_acceleration}};
+  for (std::size_t k = 0; k < h.normal_force.size(); ++k) {
+    columns.push_back({"normal_force_" + std::to_string(k) + "_N", "N", h.normal_force[k]});
+  }
+  for (std::size_t k = 0; k < h.shear_force.size(); ++k) {
+    columns.push_back({"shear_force_" + std::to_string(k) + "_N", "N", h.shear_force[k]});
+  }
+  return columns;
+}
+
+void write_columns_csv(const std::filesystem::path& file, const std::vector<HistoryColumn>& columns) {
   std::ofstream out(file);
   if (!out) throw std::runtime_error(file.string() + ": cannot write");
   // No comment line: pandas and numpy read the header with their defaults. What the run was (the
   // version, the case, the summary) is in summary.json beside it; every column's unit is in its name.
-  out << "time_s,rotation_rad,angular_velocity_rad_s,slide_m,uplift_m,table_acceleration_m_s2,table_velocity_m_s,"
-         "table_displacement_m,table_vertical_acceleration_m_s2";
-  for (std::size_t k = 0; k < h.normal_force.size(); ++k) out << ",normal_force_" << k << "_N";
-  for (std::size_t k = 0; k < h.shear_force.size(); ++k) out << ",shear_force_" << k << "_N";
+  for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].name;
   out << "\n" << std::setprecision(10);
-  for (std::size_t i = 0; i < h.time.size(); ++i) {
-    out << h.time[i] << ',' << h.rotation[i] << ',' << h.angular_velocity[i] << ',' << h.slide[i] << ',' << h.uplift[i]
-        << ',' << h.table_acceleration[i] << ',' << h.table_velocity[i] << ',' << h.table_displacement[i] << ','
-        << h.table_vertical_acceleration[i];
-    for (const auto& force : h.normal_force) out << ',' << force[i];
-    for (const auto& force : h.shear_force) out << ',' << force[i];
+  const std::size_t rows = columns.empty() ? 0 : columns.front().values.size();
+  for (std::size_t i = 0; i < rows; ++i) {
+    for (std::size_t c = 0; c < columns.size(); ++c) out << (c ? "," : "") << columns[c].values[i];
     out << '\n';
   }
+}
+
+void write_history_csv(const std::filesystem::path& file, const RunReport& report) {
+  write_columns_csv(file, history_columns(report));
 }
 
 void write_run_attributes(hdf5::Group& root, const Case* source, double wall_seconds) {

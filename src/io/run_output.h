@@ -6,6 +6,7 @@
 #include <filesystem>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "casefile/case_file.h"
 #include "io/hdf5_file.h"
@@ -22,7 +23,21 @@ struct RunReport {
   double wall_seconds = 0.0;
 };
 
+// A history column as the CSV names it (its unit in its name: "rotation_rad"), its unit, and
+// its samples.
+struct HistoryColumn {
+  std::string name;
+  std::string unit;
+  std::vector<double> values;
+};
+
 void print_summary(std::ostream& out, const RunReport& report);
+// What summary.json holds, as text (JSON), for the file and for the Python module alike.
+std::string summary_json_text(const RunReport& report);
+// The columns of history.csv, in its order.
+std::vector<HistoryColumn> history_columns(const RunReport& report);
+// A CSV file of the columns: a header of their names, one row per sample, no comment line.
+void write_columns_csv(const std::filesystem::path& file, const std::vector<HistoryColumn>& columns);
 void write_history_csv(const std::filesystem::path& file, const RunReport& report);
 void write_summary_json(const std::filesystem::path& file, const RunReport& report);
 void write_run_hdf5(const std::filesystem::path& file, const RunReport& report);

@@ -87,9 +87,10 @@ void print_summary3d(std::ostream& out, const RunReport3D& report) {
   }
 }
 
-void write_summary_json3d(const std::filesystem::path& file, const RunReport3D& report) {
+std::string summary_json_text3d(const RunReport3D& report) {
   nlohmann::json j;
   j["caskdem_version"] = build_info::version;
+  if (report.source) j["case_file"] = report.source->file.string();
   j["dimensions"] = 3;
   each_summary_figure(report, [&](const char* key, double value) { j[key] = value; });
   j["status"] = status_name(report.result.summary.status);
@@ -97,26 +98,42 @@ void write_summary_json3d(const std::filesystem::path& file, const RunReport3D& 
   j["time_base"] = report.motions.time_base;
   if (report.result.summary.rest_criterion) j["came_to_rest"] = report.result.summary.came_to_rest;
   j["wall_time_s"] = report.wall_seconds;
+  return j.dump(2);
+}
+
+void write_summary_json3d(const std::filesystem::path& file, const RunReport3D& report) {
   std::ofstream out(file);
   if (!out) throw std::runtime_error(file.string() + ": cannot write");
-  out << j.dump(2) << "\n";
+  out << summary_json_text3d(report) << "\n";
+}
+
+std::vector<HistoryColumn> history_columns3d(const RunReport3D& report) {
+  // x and z are horizontal, y is up (docs/output.md).
+  const TimeHistory3D& h = report.result.history;
+  std::vector<double> slide(h.time.size()), slip(h.time.size());
+  for (std::size_t i = 0; i < h.time.size(); ++i) {
+    slide[i] = std::hypot(h.slide_x[i], h.slide_z[i]);
+    slip[i] = std::hypot(h.slip_x[i], h.slip_z[i]);
+  }
+  return {{"time_s", "s", h.time},
+          {"tilt_rad", "rad", h.tilt},
+          {"tilt_azimuth_rad", "rad", h.tilt_azimuth},
+          {"spin_rad", "rad", h.spin},
+          {"rim_contact_azimuth_rad", "rad", h.rim_azimuth},
+          {"slide_x_m", "m", h.slide_x},
+          {"slide_z_m", "m", h.slide_z},
+          {"slide_m", "m", slide},
+          {"slip_x_m", "m", h.slip_x},
+          {"slip_z_m", "m", h.slip_z},
+          {"slip_m", "m", slip},
+          {"uplift_m", "m", h.uplift},
+          {"table_x_m_s2", "m/s^2", h.table_x},
+          {"table_z_m_s2", "m/s^2", h.table_z},
+          {"table_vertical_m_s2", "m/s^2", h.table_vertical}};
 }
 
 void write_history_csv3d(const std::filesystem::path& file, const RunReport3D& report) {
-  const TimeHistory3D& h = report.result.history;
-  std::ofstream out(file);
-  if (!out) throw std::runtime_error(file.string() + ": cannot write");
-  // No comment line (pandas and numpy read the header as it is): x and z are horizontal, y is up
-  // (docs/output.md), the run itself is in summary.json beside it.
-  out << "time_s,tilt_rad,tilt_azimuth_rad,spin_rad,rim_contact_azimuth_rad,slide_x_m,slide_z_m,slide_m,slip_x_m,"
-         "slip_z_m,slip_m,uplift_m,table_x_m_s2,table_z_m_s2,table_vertical_m_s2\n";
-  out << std::setprecision(10);
-  for (std::size_t i = 0; i < h.time.size(); ++i) {
-    out << h.time[i] << ',' << h.tilt[i] << ',' << h.tilt_azimuth[i] << ',' << h.spin[i] << ',' << h.rim_azimuth[i]
-        << ',' << h.slide_x[i] << ',' << h.slide_z[i] << ',' << std::hypot(h.slide_x[i], h.slide_z[i]) << ','
-        << h.slip_x[i] << ',' << h.slip_z[i] << ',' << std::hypot(h.slip_x[i], h.slip_z[i]) << ',' << h.uplift[i] << ','
-        << h.table_x[i] << ',' << h.table_z[i] << ',' << h.table_vertical[i] << '\n';
-  }
+  write_columns_csv(file, history_columns3d(report));
 }
 
 void write_run_hdf5_3d(const std::filesystem::path& file, const RunReport3D& report) {
