@@ -12,6 +12,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libmujoco-dev
   libopenmpi-dev openmpi-bin
   python3-matplotlib python3-h5py python3-numpy python3-pandas
+  python3-dev python3-pybind11 python3-pytest python3-openturns
   clang libclang-rt-dev libomp-dev
 )
 

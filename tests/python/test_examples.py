@@ -44,3 +44,49 @@ def test_a_result_file_reads_into_pandas(command_line, tmp_path):
     assert "256 realisations" in done.stdout and "tip_over: median" in done.stdout
     missing = run_example("read_result.py", tmp_path / "none.h5", cwd=tmp_path)
     assert missing.returncode == 2 and "none.h5" in missing.stderr
+
+
+def test_the_docs_list_every_rollout_parameter_with_its_unit():
+    import caskdem
+
+    page = (SOURCE / "docs/python.md").read_text()
+    for name, unit, meaning in caskdem.rollout_parameters():
+        row = next((line for line in page.splitlines() if line.startswith(f"| `{name}` |")), None)
+        assert row is not None, name
+        shown = row.split("|")[2].strip()
+        assert shown == unit or (unit == "1" and name == "motion" and shown == "index"), (name, unit, shown)
+
+
+def readme_blocks(section):
+    """The code blocks of a README section, by language."""
+    blocks, language, lines, inside = [], None, [], False
+    for line in (SOURCE / "README.md").read_text().splitlines():
+        if line.startswith("## "):
+            inside = line == f"## {section}"
+            continue
+        if not inside:
+            continue
+        if line.startswith("```"):
+            if language is None:
+                language, lines = line[3:].strip(), []
+            else:
+                blocks.append((language, "\n".join(lines)))
+                language = None
+        elif language is not None:
+            lines.append(line)
+    return blocks
+
+
+def test_the_readmes_python_lines_run_as_written():
+    blocks = readme_blocks("From Python")
+    assert [language for language, _ in blocks] == ["sh", "python"]
+    command = blocks[0][1].strip()
+    assert command.startswith("python3 -c ")
+    shown = subprocess.run([sys.executable, "-c", command.split('"')[1]], cwd=SOURCE, capture_output=True, text=True,
+                           env=dict(os.environ, PAGER="cat"))
+    assert shown.returncode == 0 and "rollout" in shown.stdout, shown.stderr
+    ran = subprocess.run([sys.executable, "-c", blocks[1][1]], cwd=SOURCE, capture_output=True, text=True,
+                         env=dict(os.environ), timeout=300)
+    assert ran.returncode == 0, ran.stderr
+    probability, unit = ran.stdout.split()
+    assert 0.0 < float(probability) < 1.0 and unit == "m"
