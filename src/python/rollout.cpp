@@ -80,15 +80,6 @@ py::list rollout_columns(Ensemble& e, const py::dict& parameters, const std::str
     }
     columns[name] = std::move(column_values);
   }
-  // Checked against the ensemble's own plan, which keeps a calibration it computes for later calls;
-  // the copy that runs them shares its motions.
-  std::vector<RealisationInput> inputs = realisations_from_columns(e.plan, columns, count, options.isa);
-  EnsemblePlan chosen = e.plan;
-  chosen.set_realisations(std::move(inputs));
-  LaneDevice* device = device_for(e, kind);
-  options.device = device;
-  const MotionTables& tables = tables_for(e, device != nullptr);
-
   const std::thread::id main_thread = std::this_thread::get_id();
   Clock::time_point last_signal_check = Clock::now(), last_progress = Clock::now();
   options.on_progress = [&](std::int64_t done) {
@@ -110,7 +101,14 @@ py::list rollout_columns(Ensemble& e, const py::dict& parameters, const std::str
   EnsembleResults results;
   {
     py::gil_scoped_release release;
-    results = rollout(chosen, tables, options);
+    const std::lock_guard<std::mutex> lock(e.busy);
+    // Checked against the ensemble's own plan, which keeps a calibration it computes for later
+    // calls; the copy that runs them shares its motions.
+    std::vector<RealisationInput> inputs = realisations_from_columns(e.plan, columns, count, options.isa);
+    EnsemblePlan chosen = e.plan;
+    chosen.set_realisations(std::move(inputs));
+    options.device = device_for(e, kind);
+    results = rollout(chosen, tables_for(e, options.device != nullptr), options);
   }
   py::list out;
   for (const EnsembleResults::Column& c : results.columns()) {

@@ -211,3 +211,20 @@ def test_a_long_loop_of_calls_does_not_grow(mixed_outcomes):
         caskdem.realisations(mixed_outcomes)
     grown = resident_kib() - before
     assert grown < 4 * 1024, f"resident memory grew by {grown} KiB over 300 calls"
+
+
+def test_calls_from_two_threads_on_one_ensemble_take_turns_and_agree(mixed_outcomes):
+    rows = caskdem.realisations(mixed_outcomes)
+    alone = caskdem.rollout(mixed_outcomes, rows)
+    results = [None, None]
+
+    def call(k):
+        results[k] = caskdem.rollout(mixed_outcomes, rows, threads=1, isa="sse2" if k else "automatic")
+
+    threads = [threading.Thread(target=call, args=(k,)) for k in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for ran in results:
+        assert np.array_equal(bits(ran["max_abs_rotation"]), bits(alone["max_abs_rotation"]))
