@@ -45,9 +45,11 @@ namespace {
 // The column's value for a row (a column of one value holds for every row), or none.
 class Columns {
  public:
-  Columns(const ParameterColumns& columns, std::int64_t count) : columns_(columns), count_(count) {
+  Columns(const ParameterColumns& columns, std::int64_t count) : columns_(columns) {
     const auto& known = rollout_parameters();
-    for (const auto& [name, values] : columns) {
+    for (const auto& column : columns) {
+      const std::string& name = column.first;
+      const std::vector<double>& values = column.second;
       if (std::none_of(known.begin(), known.end(), [&](const RolloutParameter& p) { return p.name == name; })) {
         std::string names;
         std::vector<std::string> candidates;
@@ -78,7 +80,6 @@ class Columns {
 
  private:
   const ParameterColumns& columns_;
-  std::int64_t count_;
 };
 
 // The base corners' extent in x (the body frame): the centre of mass must lie over it.
