@@ -28,6 +28,20 @@ fi
 mkdir -p "$site"
 echo "$PWD/build/python" >"$site/caskdem.pth"
 echo "main.sh: import caskdem works in /usr/bin/python3 ($site/caskdem.pth names $PWD/build/python)"
+# The python3 first on the PATH may be another interpreter (pyenv, a virtual environment): of the
+# same Python version it can load the module too, and gets the same .pth file in its own site folder.
+other=$(command -v python3 || true)
+version() { "$1" -c 'import sys; print("%d.%d" % sys.version_info[:2])' 2>/dev/null || true; }
+if [ -n "$other" ] && [ "$("$other" -c 'import sys; print(sys.executable)' 2>/dev/null)" != /usr/bin/python3 ]; then
+  if [ "$(version "$other")" = "$(version /usr/bin/python3)" ]; then
+    other_site=$("$other" -c 'import os, site; d = site.getsitepackages()[0]; print(d if os.access(d, os.W_OK) else site.getusersitepackages())')
+    mkdir -p "$other_site"
+    echo "$PWD/build/python" >"$other_site/caskdem.pth"
+    echo "main.sh: and in $other ($other_site/caskdem.pth; its arrays need numpy in that interpreter)"
+  else
+    echo "main.sh: python3 on this PATH is $other (Python $(version "$other")); the module is for /usr/bin/python3 (Python $(version /usr/bin/python3))"
+  fi
+fi
 # A fragility analysis on built-in synthetic earthquakes (no downloaded file): results/*.h5 and *.png,
 # with the fragility table beside it (*-fragility.csv and .json), then the annual frequency of each
 # limit state at a synthetic site, the 1/3 model's curves taken to the full-size cask's by the

@@ -14,7 +14,7 @@ namespace {
 
 toml::table table_of(const py::dict& tables, const std::string& prefix);
 
-// One value (bool before int: Python's True is an int). numpy's scalars pass as their Python kind.
+// One value (bool before int: Python's True is an int).
 void put(toml::array& array, const py::handle& value, const std::string& key);
 
 std::string key_of(const std::string& prefix, const py::handle& key) {
@@ -23,30 +23,34 @@ std::string key_of(const std::string& prefix, const py::handle& key) {
   return prefix.empty() ? name : prefix + "." + name;
 }
 
-template <class Container, class Insert>
+// numpy's scalars pass as the Python kinds they stand for (np.bool_, its integers by __index__,
+// its floats by __float__), its arrays as lists; numpy itself is never imported here, so keyword
+// tables work in an interpreter without it.
+template <class Insert>
 void insert_value(const py::handle& value, const std::string& key, Insert&& insert) {
-  if (py::isinstance<py::bool_>(value) || py::isinstance(value, py::module_::import("numpy").attr("bool_"))) {
-    insert(value.cast<bool>());
+  const std::string type = py::str(py::type::of(value).attr("__name__")).cast<std::string>();
+  if (py::isinstance<py::bool_>(value) || type == "bool_") {
+    insert(py::bool_(py::reinterpret_borrow<py::object>(value)).cast<bool>());
   } else if (PyIndex_Check(value.ptr()) && !PyFloat_Check(value.ptr())) {
     insert(py::int_(py::reinterpret_borrow<py::object>(value)).cast<std::int64_t>());
-  } else if (PyFloat_Check(value.ptr()) || py::isinstance(value, py::module_::import("numpy").attr("floating"))) {
-    insert(value.cast<double>());
   } else if (py::isinstance<py::str>(value)) {
     insert(value.cast<std::string>());
   } else if (py::isinstance<py::dict>(value)) {
     insert(table_of(value.cast<py::dict>(), key));
-  } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value) || py::isinstance<py::array>(value)) {
+  } else if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value) || type == "ndarray") {
     toml::array array;
     std::size_t k = 0;
     for (const py::handle item : py::iter(value)) put(array, item, key + "[" + std::to_string(k++) + "]");
     insert(std::move(array));
+  } else if (PyFloat_Check(value.ptr()) || py::hasattr(value, "__float__")) {
+    insert(py::float_(py::reinterpret_borrow<py::object>(value)).cast<double>());
   } else {
     refuse(key, value, "a table (dict), a list, a string, a number or a boolean");
   }
 }
 
 void put(toml::array& array, const py::handle& value, const std::string& key) {
-  insert_value<toml::array>(value, key, [&](auto&& v) { array.push_back(std::forward<decltype(v)>(v)); });
+  insert_value(value, key, [&](auto&& v) { array.push_back(std::forward<decltype(v)>(v)); });
 }
 
 toml::table table_of(const py::dict& tables, const std::string& prefix) {
@@ -55,7 +59,7 @@ toml::table table_of(const py::dict& tables, const std::string& prefix) {
     const std::string path = key_of(prefix, key);
     const std::string name = key.cast<std::string>();
     if (value.is_none()) refuse(path, value, "a value (leave the key out for its default)");
-    insert_value<toml::table>(value, path,
+    insert_value(value, path,
                               [&](auto&& v) { table.insert_or_assign(name, std::forward<decltype(v)>(v)); });
   }
   return table;

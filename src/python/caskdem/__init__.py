@@ -27,8 +27,6 @@ import pathlib
 import tomllib
 from typing import Callable, Mapping, Optional
 
-import numpy as np
-
 from . import _caskdem as _native
 
 __version__ = _native.__version__
@@ -74,6 +72,17 @@ class Run:
     def __repr__(self):
         s = self.summary
         return f"<caskdem.Run: {s.get('status')}, {len(self.history.get('time_s', []))} samples>"
+
+
+def _numpy():
+    """numpy, which every array here is; imported when first needed, so that `import caskdem` and
+    help() work in an interpreter without it."""
+    try:
+        import numpy
+    except ImportError:
+        raise ImportError("caskdem's arrays need numpy: run /usr/bin/python3 (Debian's python3-numpy), or "
+                          "install numpy into this interpreter") from None
+    return numpy
 
 
 def _columns(triples) -> Columns:
@@ -132,6 +141,7 @@ def run(case: Case, output_interval: Optional[float] = None) -> Run:
     ``output_interval`` (s) overrides the case's [output] interval; 0 keeps no history. A 3D
     case without a settle time runs until the cask is at rest, as ``caskdem run`` does.
     """
+    _numpy()
     summary, history = _native.run(case, output_interval)
     import json
     return Run(json.loads(summary), _columns(history))
@@ -158,6 +168,7 @@ def realisations(ensemble: Ensemble) -> Columns:
     ``rollout(ensemble, realisations(ensemble))`` gives, bit for bit, the outcomes that
     ``caskdem ensemble`` stores for the same file.
     """
+    _numpy()
     units = {name: unit for name, unit, _ in _native.rollout_parameters()}
     columns = ensemble.realisations()
     return Columns(columns, {name: units[name] for name in columns})
@@ -208,6 +219,7 @@ def rollout(ensemble: Ensemble, parameters: Optional[Mapping] = None, *, device:
     most ten times a second. The GIL is released while the realisations run; Ctrl-C stops
     the run at the next finished realisation and raises KeyboardInterrupt.
     """
+    np = _numpy()
     given = dict(parameters or {})
     for name, values in columns.items():
         if name in given:
@@ -238,6 +250,7 @@ def fit_fragility(level, exceeded, motion=None, *, confidence: float = 0.95, boo
     clustered: p_value, record_to_record, design_effect, rejected, text); ``rejected`` says
     whether the curve failed it. A rejected curve is still returned: say so where you use it.
     """
+    _numpy()
     return _native.fit_fragility(level, exceeded, motion, confidence, bootstrap, seed)
 
 
@@ -255,6 +268,7 @@ def annual_frequency(median: float, beta_r: float, *, beta_u: float = 0.0, measu
     sampled), the HCLPF capacities (conservative, composite and the lower of the two; SI), and
     how the integral splits (below_curve, above_curve, segment_frequency).
     """
+    _numpy()
     return _native.annual_frequency(median, beta_r, beta_u, measure, None if hazard is None else str(hazard),
                                     intensity, frequency)
 
@@ -270,6 +284,7 @@ class Group(dict):
 
 
 def _text(value):
+    np = _numpy()
     if isinstance(value, bytes):
         return value.decode()
     if isinstance(value, np.ndarray) and value.dtype.kind in "OS":
