@@ -16,9 +16,13 @@ case "${1:-}" in
   --full) full=true ;;
   *) echo "usage: scripts/test.sh [--full]" >&2; exit 2 ;;
 esac
+# Each stage's end and the time so far, so a slow gate shows where its time went.
+stage() { echo "== scripts/test.sh: $1 at $((SECONDS / 60)) min $((SECONDS % 60)) s"; }
 scripts/install-deps.sh
+stage "dependencies installed"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCASKDEM_BUILD_TESTS=ON -DCASKDEM_BUILD_BENCHMARKS=ON >/dev/null
 cmake --build build -j"$(nproc)"
+stage "Release build done"
 if $full; then
   ctest --test-dir build --output-on-failure --no-tests=error -j"$(nproc)" -LE gpu
 else
@@ -29,11 +33,16 @@ fi
 ctest --test-dir build --output-on-failure --no-tests=error -L gpu -V >build/gpu-tests.log 2>&1 ||
   { cat build/gpu-tests.log; exit 1; }
 grep -E "Skipped|no GPU|GPU:|identical|\.toml|tests passed|Test #" build/gpu-tests.log || true
+stage "suite passed"
 $full || exit 0
 # Every reader under libFuzzer with the address and undefined-behaviour sanitizers, 10 s per
 # target (bench/fuzz.sh; docs/fuzzing.md has the long runs).
 TIMEOUT=10 bench/fuzz.sh build-fuzz build-fuzz/smoke 1000000 10
+stage "fuzz smoke run done"
 # The suite again under AddressSanitizer and UndefinedBehaviorSanitizer, and the ensemble tests
 # under ThreadSanitizer (scripts/sanitize.sh; docs/fuzzing.md, "Sanitizer builds").
 scripts/sanitize.sh address
+stage "address and undefined-behaviour sanitizers passed"
 scripts/sanitize.sh thread
+stage "thread sanitizer passed"
+
