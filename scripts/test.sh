@@ -45,4 +45,3 @@ scripts/sanitize.sh address
 stage "address and undefined-behaviour sanitizers passed"
 scripts/sanitize.sh thread
 stage "thread sanitizer passed"
-
