@@ -67,7 +67,7 @@ std::vector<std::string> limit_state_lines(const EnsemblePlan& plan, const Limit
     lines.push_back(indent + s.same_as);
   } else if (s.limit_state.kind != LimitState::Kind::tip_over) {
     std::string standing = indent + "exceeded while standing, by stripe:";
-    for (std::int64_t c : s.standing_count) standing += " " + std::to_string(c);
+    for (std::int64_t c : s.standing_count) standing.append(" ").append(std::to_string(c));
     lines.push_back(standing);
   }
   return lines;

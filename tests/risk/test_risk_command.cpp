@@ -165,7 +165,9 @@ TEST_F(RiskCommand, AnAnswerOnARejectedFitSaysSo) {
   EXPECT_THAT(o.output, HasSubstr("rests on a REJECTED fit: the ensemble's curve fails its test at 5 % (p 0.001"));
   const nlohmann::json r = nlohmann::json::parse(testing::file_text(dir_ / "r.json"));
   for (const auto& state : r["limit_states"]) {
-    if (state["name"] == "tip_over") EXPECT_TRUE(state["fit_rejected"].get<bool>());
+    if (state["name"] == "tip_over") {
+      EXPECT_TRUE(state["fit_rejected"].get<bool>());
+    }
   }
 }
 
