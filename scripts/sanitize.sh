@@ -54,6 +54,7 @@ case "$kind" in
     archer=$(realpath -m "$("$compiler" -print-resource-dir)/../../libarcher.so")  # LLVM's lib/
     [ -f "$archer" ] || { echo "sanitize.sh: no libarcher.so beside $compiler (libomp-dev)" >&2; exit 2; }
     CC=${compiler/clang++/clang} CXX=$compiler cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" \
       -DCASKDEM_SANITIZE=thread -DCASKDEM_BUILD_TESTS=ON -DCASKDEM_BUILD_BENCHMARKS=OFF -DCASKDEM_WITH_MPI=OFF \
       >/dev/null
     export OMP_TOOL_LIBRARIES="$archer"
