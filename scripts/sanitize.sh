@@ -17,7 +17,7 @@ kind=${1:?"usage: scripts/sanitize.sh address|thread [CTEST_ARGS...]"}
 shift
 jobs=$(nproc)
 targets=()
-# Tests that repeat, ten to a hundred times slower instrumented, work that the others run once:
+# Tests that repeat, three to ten times slower instrumented, work that the others run once:
 # one cask run many times to compare its bits across instruction sets, thread counts, block sizes
 # and engines, where a planar twin or a single run of the same code stays in, and a fit scanned
 # point by point.
