@@ -24,9 +24,7 @@ shared=${CASKDEM_SHARED:-../shared}
 compiler=$(command -v clang++-15 || command -v clang++ || true)
 [ -n "$compiler" ] || { echo "fuzz.sh: no clang++ (libFuzzer); scripts/install-deps.sh installs it" >&2; exit 2; }
 c_compiler=$(echo "$compiler" | sed 's/clang++/clang/')
-# -O1 with line tables, as libFuzzer's documentation builds its targets.
-CC=$c_compiler CXX=$compiler cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" -DCASKDEM_BUILD_TESTS=OFF \
+CC=$c_compiler CXX=$compiler cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCASKDEM_BUILD_TESTS=OFF \
   -DCASKDEM_BUILD_BENCHMARKS=OFF -DCASKDEM_BUILD_FUZZERS=ON -DCASKDEM_WITH_MPI=OFF >/dev/null
 cmake --build "$build" -j"$(nproc)" >/dev/null
 

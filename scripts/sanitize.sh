@@ -40,9 +40,7 @@ repeats=$(
 case "$kind" in
   address)
     build=build-asan
-    # -O1, as AddressSanitizer's authors advise: half the compile time of -O2, and the checks the same.
-    cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" \
-      -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" -DCASKDEM_SANITIZE=address,undefined \
+    cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCASKDEM_SANITIZE=address,undefined \
       -DCASKDEM_BUILD_TESTS=ON -DCASKDEM_BUILD_BENCHMARKS=OFF >/dev/null
     export ASAN_OPTIONS="abort_on_error=1:detect_leaks=1:check_initialization_order=1:strict_string_checks=1"
     export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
@@ -54,7 +52,6 @@ case "$kind" in
     archer=$(realpath -m "$("$compiler" -print-resource-dir)/../../libarcher.so")  # LLVM's lib/
     [ -f "$archer" ] || { echo "sanitize.sh: no libarcher.so beside $compiler (libomp-dev)" >&2; exit 2; }
     CC=${compiler/clang++/clang} CXX=$compiler cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-      -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" -DCMAKE_C_FLAGS_RELWITHDEBINFO="-O1 -DNDEBUG" \
       -DCASKDEM_SANITIZE=thread -DCASKDEM_BUILD_TESTS=ON -DCASKDEM_BUILD_BENCHMARKS=OFF -DCASKDEM_WITH_MPI=OFF \
       >/dev/null
     export OMP_TOOL_LIBRARIES="$archer"
