@@ -34,8 +34,13 @@ lane::OperationCount count_operations(FrictionLaw law) {
     parameters.for_each_field([&](lane::Counted& v) { v = lane::Counted(values[i++]); });
   }
   const BodyState<double> rest = rest_state(model, p);
-  BodyState<lane::Counted> body{lane::Counted(rest.x), lane::Counted(rest.y), lane::Counted(rest.theta),
-                                lane::Counted(rest.vx), lane::Counted(rest.vy), lane::Counted(rest.omega)};
+  BodyState<double> rest_copy = rest;
+  double rest_values[BodyState<double>::field_count];
+  int field = 0;
+  rest_copy.for_each_field([&](double& v) { rest_values[field++] = v; });
+  BodyState<lane::Counted> body;
+  field = 0;
+  body.for_each_field([&](lane::Counted& v) { v = lane::Counted(rest_values[field++]); });
   CornerState<lane::Counted> corners[kMaxCorners];
   Response<lane::Counted> response;
   response.for_each_field([](lane::Counted& v) { v = lane::Counted(0.0); });

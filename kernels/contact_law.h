@@ -23,7 +23,9 @@
 //                  exactly mu F_n, so the applied shear force is clipped to |F_s| <= mu F_n
 //
 // v_n and v_s are the normal and tangential velocities of the contact point relative to the
-// floor, at the half step (central differences). beta is the stiffness-proportional
+// floor. The spring's increment reads v_s at the half step (central differences: the slip from
+// t_{n-1} to t_n); the dashpots and mu read it at the half step as the source paper does, or at
+// the whole step where Model::whole_step_terms asks (kernels/slider.h). beta is the stiffness-proportional
 // (Rayleigh) damping coefficient: a damping ratio h at circular frequency omega gives
 // beta = 2 h / omega (Clough & Penzien, Dynamics of Structures, eq. 12-37). A corner out of
 // contact carries no force and forgets its shear spring.
@@ -33,6 +35,7 @@
 #include "kernels/lane.h"
 #include "kernels/lane_state.h"
 #include "kernels/model.h"
+#include "kernels/slider.h"
 
 namespace caskdem::kernels {
 
@@ -65,8 +68,8 @@ CASKDEM_HOST_DEVICE inline T normal_force(const T& normal_stiffness, const LaneP
 
 template <FrictionLaw Law, class T>
 CASKDEM_HOST_DEVICE inline CornerContact<T> corner_contact(const Model& model, const LaneParameters<T>& lane_parameters,
-                                                           int corner, const T& gap, const T& normal_velocity,
-                                                           const T& slip_velocity, const CornerState<T>& previous) {
+                                                           int corner, const T& gap, const SliderVelocities<T>& velocity,
+                                                           const CornerState<T>& previous) {
   using lane::broadcast;
   using lane::select;
   const T zero = broadcast<T>(0.0);
@@ -75,14 +78,14 @@ CASKDEM_HOST_DEVICE inline CornerContact<T> corner_contact(const Model& model, c
   const T beta = lane_parameters.damping_beta;
 
   const auto touching = gap < zero;
-  const T normal = normal_force(normal_stiffness, lane_parameters, gap, normal_velocity);
+  const T normal = normal_force(normal_stiffness, lane_parameters, gap, velocity.normal_dashpot);
 
   const auto was_slipping = previous.slipping > broadcast<T>(0.5);
-  const T trial = previous.shear_spring - shear_stiffness * slip_velocity * broadcast<T>(model.time_step);
-  const T sticking_dashpot = -beta * shear_stiffness * slip_velocity;
+  const T trial = previous.shear_spring - shear_stiffness * velocity.spring.slip_x * broadcast<T>(model.time_step);
+  const T sticking_dashpot = -beta * shear_stiffness * velocity.shear_dashpot_x;
   const T sticking = trial + sticking_dashpot;
   const T limit =
-      friction_limit<Law>(model, lane_parameters, lane::abs(slip_velocity), was_slipping, normal, [&](const T& floor) {
+      friction_limit<Law>(model, lane_parameters, lane::abs(velocity.friction_x), was_slipping, normal, [&](const T& floor) {
         return lane::abs(trial) <= floor && lane::abs(sticking) <= floor;
       });
   const auto slipping = touching && (lane::abs(trial) > limit);

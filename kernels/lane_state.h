@@ -44,19 +44,23 @@ struct LaneParameters {
 };
 
 // Rigid-body state in the floor frame. Central differences keep positions at whole steps
-// (t_n) and velocities at half steps (t_{n-1/2} on entry to a step).
+// (t_n) and velocities at half steps (t_{n-1/2} on entry to a step). The last step's change of
+// each velocity, v(n-1/2) - v(n-3/2), is kept for the whole-step slider (kernels/slider.h),
+// which extrapolates the velocity to t_n; zero (no history) reads the half-step velocity.
 template <class T>
 struct BodyState {
   T x, y;      // centre of mass, m
   T theta;     // rotation, rad
   T vx, vy;    // m/s
   T omega;     // rad/s
+  T kick_vx, kick_vy;  // m/s, the last step's change of vx and vy
+  T kick_omega;        // rad/s, the last step's change of omega
 
   template <class F>
   CASKDEM_HOST_DEVICE void for_each_field(F&& f) {
-    f(x); f(y); f(theta); f(vx); f(vy); f(omega);
+    f(x); f(y); f(theta); f(vx); f(vy); f(omega); f(kick_vx); f(kick_vy); f(kick_omega);
   }
-  static constexpr int field_count = 6;
+  static constexpr int field_count = 9;
 };
 
 // The spring-slider state of one corner contact.

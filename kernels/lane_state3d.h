@@ -9,19 +9,24 @@ namespace caskdem {
 
 // Rigid-body state in the floor frame: the centre of mass and its velocity (at the half step),
 // the orientation (unit quaternion, body -> floor) and the angular momentum in body
-// coordinates (at the half step, before the step's torque kick).
+// coordinates (at the half step, before the step's torque kick). The last step's change of the
+// velocity and of the body-frame angular momentum are kept for the whole-step slider
+// (kernels/slider.h); zero reads the half-step values.
 template <class T>
 struct BodyState3D {
   T x, y, z;
   T vx, vy, vz;
   T qw, qx, qy, qz;
   T pi_x, pi_y, pi_z;
+  T kick_vx, kick_vy, kick_vz;  // m/s
+  T kick_pi_x, kick_pi_y, kick_pi_z;  // kg m^2/s, body frame
 
   template <class F>
   CASKDEM_HOST_DEVICE void for_each_field(F&& f) {
     f(x); f(y); f(z); f(vx); f(vy); f(vz); f(qw); f(qx); f(qy); f(qz); f(pi_x); f(pi_y); f(pi_z);
+    f(kick_vx); f(kick_vy); f(kick_vz); f(kick_pi_x); f(kick_pi_y); f(kick_pi_z);
   }
-  static constexpr int field_count = 13;
+  static constexpr int field_count = 19;
 };
 
 // The spring-slider of one contact: its shear spring is a vector in the floor plane; the rim's

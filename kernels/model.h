@@ -25,6 +25,16 @@ enum class FrictionLaw : std::int32_t {
   tabulated = 3,       // mu(|v|) interpolated in a table (speed, coefficient)
 };
 
+// Which of the spring-slider's velocity-dependent terms read the velocity at the whole step t_n
+// (extrapolated, kernels/slider.h) rather than at the half step t_{n-1/2} as the source paper's
+// central-difference scheme does; a bit set per term, so that each can be studied alone.
+enum WholeStepTerm : std::int32_t {
+  kWholeStepNormalDashpot = 1,  // the normal dashpot beta K_n v_n (and the impact damper)
+  kWholeStepShearDashpot = 2,   // the sticking contact's shear dashpot beta K_s v_s
+  kWholeStepFriction = 4,       // the slip speed the friction law reads, mu(|v_s|)
+  kWholeStepSlider = kWholeStepNormalDashpot | kWholeStepShearDashpot | kWholeStepFriction,
+};
+
 // How a lane ended. A tipped cask is a result, not an error.
 enum class LaneStatus : std::int32_t {
   running = 0,     // still running, or ran to the end of the motion
@@ -58,6 +68,8 @@ struct Model {
 
   double gravity = 9.80665;  // m/s^2
   double time_step = 0.0;    // s, dt = f_s * 2 sqrt(m / K)
+  // WholeStepTerm bits: 0 is the source paper's half-step slider, kWholeStepSlider the whole-step one.
+  std::int32_t whole_step_terms = 0;
 
   // Observation and end criteria.
   double stability_angle = 0.0;           // alpha: rotation at which the centre of mass passes over the pivot

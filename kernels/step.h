@@ -12,8 +12,9 @@
 //
 // Central differences (the DEM's explicit scheme; Cundall 1971, Hart et al. 1988):
 //   v(n+1/2) = v(n-1/2) + a(n) dt,   x(n+1) = x(n) + v(n+1/2) dt,
-// with contact forces from positions at t_n and dashpot and shear-spring increments from
-// velocities at t_{n-1/2}. The step observes the state at t_n (running maxima, impacts, end
+// with contact forces from positions at t_n and shear-spring increments from velocities at
+// t_{n-1/2}; the dashpots and the friction law read the velocity at t_{n-1/2} (the source paper's
+// scheme) or extrapolated to t_n (Model::whole_step_terms; kernels/slider.h). The step observes the state at t_n (running maxima, impacts, end
 // criteria) before advancing it; a lane that has stopped keeps its state.
 
 #include "kernels/contact_law.h"
@@ -23,6 +24,7 @@
 #include "kernels/lane_state.h"
 #include "kernels/model.h"
 #include "kernels/portable_math.h"
+#include "kernels/slider.h"
 
 namespace caskdem::kernels {
 
@@ -43,6 +45,11 @@ CASKDEM_HOST_DEVICE inline void step(const Model& model, const LaneParameters<T>
   const SinCos<T> rotation = sin_cos(body.theta);
   const T s = rotation.sin;
   const T c = rotation.cos;
+  // The body's velocity at t_n, for the terms that read it there (kernels/slider.h).
+  const std::int32_t whole_step_terms = model.whole_step_terms;
+  const T vx_n = at_whole_step(body.vx, body.kick_vx);
+  const T vy_n = at_whole_step(body.vy, body.kick_vy);
+  const T omega_n = at_whole_step(body.omega, body.kick_omega);
   T force_x = zero, force_y = zero, moment = zero;
   T lowest_gap = broadcast<T>(1e300);
   T uplift = zero;
@@ -58,9 +65,11 @@ CASKDEM_HOST_DEVICE inline void step(const Model& model, const LaneParameters<T>
     const T gap = body.y + centre_y - radius;
     const T lever_x = centre_x;  // contact point: the bottom of the arc
     const T lever_y = centre_y - radius;
-    const T normal_velocity = body.vy + body.omega * lever_x;
-    const T slip_velocity = body.vx - body.omega * lever_y;
-    const CornerContact<T> contact = corner_contact<Law>(model, p, k, gap, normal_velocity, slip_velocity, corners[k]);
+    const ContactVelocity<T> half{body.vy + body.omega * lever_x, body.vx - body.omega * lever_y, zero};
+    const ContactVelocity<T> whole =
+        whole_step_terms ? ContactVelocity<T>{vy_n + omega_n * lever_x, vx_n - omega_n * lever_y, zero} : half;
+    const CornerContact<T> contact =
+        corner_contact<Law>(model, p, k, gap, slider_velocities(whole_step_terms, half, whole), corners[k]);
     force_x = force_x + contact.shear_force;
     force_y = force_y + contact.normal_force;
     moment = moment + (lever_x * contact.normal_force - lever_y * contact.shear_force);
@@ -130,12 +139,16 @@ CASKDEM_HOST_DEVICE inline void step(const Model& model, const LaneParameters<T>
   const T wobble = broadcast<T>(2.0 * model.rocking_frequency / model.stability_angle) * p.wobble_damping *
                    lane::abs(body.theta) * body.omega;
   const T accel_theta = moment * p.inverse_inertia - wobble;
-  const T vx = body.vx + accel_x * dt;
-  const T vy = body.vy + accel_y * dt;
-  const T omega = body.omega + accel_theta * dt;
+  const T kick_vx = accel_x * dt, kick_vy = accel_y * dt, kick_omega = accel_theta * dt;
+  const T vx = body.vx + kick_vx;
+  const T vy = body.vy + kick_vy;
+  const T omega = body.omega + kick_omega;
   body.x = select(running, body.x + vx * dt, body.x);
   body.y = select(running, body.y + vy * dt, body.y);
   body.theta = select(running, body.theta + omega * dt, body.theta);
+  body.kick_vx = select(running, kick_vx, body.kick_vx);
+  body.kick_vy = select(running, kick_vy, body.kick_vy);
+  body.kick_omega = select(running, kick_omega, body.kick_omega);
   body.vx = select(running, vx, body.vx);
   body.vy = select(running, vy, body.vy);
   body.omega = select(running, omega, body.omega);

@@ -7,7 +7,8 @@
 //   m x'' = sum F - m (a_x(t), g + a_y(t), a_z(t))       a_y the vertical component
 //   L'    = sum l_k x F_k                               L = R pi, about the centre of mass
 // Time stepping as in 2D (central differences: forces from positions at t_n and velocities at
-// t_{n-1/2}): v(n+1/2) = v(n-1/2) + a(n) dt, x(n+1) = x(n) + v(n+1/2) dt; for the rotation
+// t_{n-1/2}, or at t_n for the whole-step slider's terms, kernels/slider.h; the angular
+// momentum extrapolated in the body frame as the velocity is): v(n+1/2) = v(n-1/2) + a(n) dt, x(n+1) = x(n) + v(n+1/2) dt; for the rotation
 // the torque kicks the angular momentum, pi <- pi + dt R(n)^T tau(n), and the free rotation
 // over dt (kernels/rigid_rotation.h, Dullweber-Leimkuhler-McLachlan) turns the body and pi
 // together; with no torque that is the exact-to-O(dt^3) symplectic flow of a symmetric top.
@@ -22,6 +23,7 @@
 // magnitude at mu F_n along its own direction (Cundall 1988, the 3D DEM's Mohr-Coulomb
 // slider), with the stiffness-proportional dashpot -beta K_s v_s while it sticks.
 
+#include <cstdint>
 #include <limits>
 
 #include "kernels/contact_law.h"
@@ -35,6 +37,7 @@
 #include "kernels/model3d.h"
 #include "kernels/rigid_rotation.h"
 #include "kernels/rim_contact.h"
+#include "kernels/slider.h"
 
 namespace caskdem::kernels {
 
@@ -91,13 +94,15 @@ CASKDEM_HOST_DEVICE inline void for_each_rim_node(const Contacts3D& contacts, co
 template <FrictionLaw Law, class T, class Mask>
 CASKDEM_HOST_DEVICE inline Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p,
                                                     const Mask& touching, const Mask& active, const T& normal,
-                                                    const T& shear_stiffness, const T& slip_x, const T& slip_z,
+                                                    const T& shear_stiffness, const SliderVelocities<T>& velocity,
                                                     ContactState3D<T>& state) {
   using lane::broadcast;
   using lane::select;
   const T zero = broadcast<T>(0.0), one = broadcast<T>(1.0);
   const T dt = broadcast<T>(model.time_step);
-  const T slip_speed = lane::sqrt(slip_x * slip_x + slip_z * slip_z);
+  const T& slip_x = velocity.spring.slip_x;
+  const T& slip_z = velocity.spring.slip_z;
+  const T slip_speed = lane::sqrt(velocity.friction_x * velocity.friction_x + velocity.friction_z * velocity.friction_z);
   const auto was_slipping = state.slipping > broadcast<T>(0.5);
   // Where it touched before (K_s(previous) > 0), the share of the springs still touching.
   const auto had = state.stiffness > zero;
@@ -106,8 +111,8 @@ CASKDEM_HOST_DEVICE inline Vector3<T> shear_contact(const Model& model, const La
   const T trial_z = state.shear_z * kept - shear_stiffness * slip_z * dt;
   const T trial_squared = trial_x * trial_x + trial_z * trial_z;
   const T trial = lane::sqrt(trial_squared);
-  const T dashpot_x = -p.damping_beta * shear_stiffness * slip_x;
-  const T dashpot_z = -p.damping_beta * shear_stiffness * slip_z;
+  const T dashpot_x = -p.damping_beta * shear_stiffness * velocity.shear_dashpot_x;
+  const T dashpot_z = -p.damping_beta * shear_stiffness * velocity.shear_dashpot_z;
   const T sticking_x = trial_x + dashpot_x, sticking_z = trial_z + dashpot_z;
   // Squares against a square a little inside the floor's, so that the magnitudes taken below
   // (square roots of these same sums) are within the floor whatever their rounding; not where
@@ -152,6 +157,23 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   const Vector3<T> omega = rotation.apply(
       {body.pi_x * p.inverse_inertia, body.pi_y * p.inverse_axial_inertia, body.pi_z * p.inverse_inertia});
   const Vector3<T> velocity{body.vx, body.vy, body.vz};
+  // The body's velocities at t_n, for the terms that read them there (kernels/slider.h).
+  const std::int32_t whole_step_terms = model.whole_step_terms;
+  const Vector3<T> velocity_n{at_whole_step(body.vx, body.kick_vx), at_whole_step(body.vy, body.kick_vy),
+                              at_whole_step(body.vz, body.kick_vz)};
+  const Vector3<T> omega_n = whole_step_terms ? rotation.apply({at_whole_step(body.pi_x, body.kick_pi_x) * p.inverse_inertia,
+                                                                at_whole_step(body.pi_y, body.kick_pi_y) * p.inverse_axial_inertia,
+                                                                at_whole_step(body.pi_z, body.kick_pi_z) * p.inverse_inertia})
+                                              : omega;
+  // A contact point's velocity from its lever arm, at the half step and at the whole step.
+  auto contact_velocities = [&](const Vector3<T>& lever) {
+    const Vector3<T> spin = cross(omega, lever);
+    const ContactVelocity<T> half{velocity.y + spin.y, velocity.x + spin.x, velocity.z + spin.z};
+    if (!whole_step_terms) return slider_velocities(whole_step_terms, half, half);
+    const Vector3<T> spin_n = cross(omega_n, lever);
+    const ContactVelocity<T> whole{velocity_n.y + spin_n.y, velocity_n.x + spin_n.x, velocity_n.z + spin_n.z};
+    return slider_velocities(whole_step_terms, half, whole);
+  };
   // A lane that stopped keeps its state; one that stops in this step still updates its springs,
   // which nothing reads after it stopped.
   const auto active = response.status == zero;
@@ -169,8 +191,7 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
     const Vector3<T> arm = rotation.apply({body_x - p.centre_x, radius - p.centre_y, body_z});
     const T gap = body.y + arm.y - radius;
     const Vector3<T> lever{arm.x, arm.y - radius, arm.z};
-    const T vertical_velocity = velocity.y + cross(omega, lever).y;
-    const T normal = normal_force(normal_stiffness, p, gap, vertical_velocity);
+    const T normal = normal_force(normal_stiffness, p, gap, contact_velocities(lever).normal_dashpot);
     rim_normal = rim_normal + normal;
     pressure_moment = {pressure_moment.x + normal * lever.x, pressure_moment.y + normal * lever.y,
                        pressure_moment.z + normal * lever.z};
@@ -186,9 +207,9 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   const Vector3<T> rim_lever{select(pushing, pressure_moment.x / pushed, lowest.x),
                              select(pushing, pressure_moment.y / pushed, lowest.y - radius),
                              select(pushing, pressure_moment.z / pushed, lowest.z)};
-  const Vector3<T> rim_spin = cross(omega, rim_lever);
-  const Vector3<T> rim_friction = shear_contact<Law>(model, p, rim_touching, active, rim_normal, rim_shear_stiffness,
-                                                     velocity.x + rim_spin.x, velocity.z + rim_spin.z, points[0]);
+  const SliderVelocities<T> rim_velocity = contact_velocities(rim_lever);
+  const Vector3<T> rim_friction =
+      shear_contact<Law>(model, p, rim_touching, active, rim_normal, rim_shear_stiffness, rim_velocity, points[0]);
   // The normal forces' moment: sum l_j x (0, F_n,j, 0) = (sum F_n,j l_j) x e_y.
   const Vector3<T> rim_moment = cross(rim_lever, rim_friction);
   Vector3<T> force{rim_friction.x, rim_normal, rim_friction.z};
@@ -200,15 +221,15 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
     const Vector3<T> arm = rotation.apply({-p.centre_x, radius - p.centre_y, zero});
     const T gap = body.y + arm.y - radius;
     const Vector3<T> lever{arm.x, arm.y - radius, arm.z};
-    const Vector3<T> spin = cross(omega, lever);
+    const SliderVelocities<T> centre_velocity = contact_velocities(lever);
     const T normal_stiffness = broadcast<T>(contacts.centre_normal_stiffness) * p.stiffness_scale;
     const T shear_stiffness = broadcast<T>(contacts.centre_shear_stiffness) * p.stiffness_scale;
-    const T normal = normal_force(normal_stiffness, p, gap, velocity.y + spin.y);
+    const T normal = normal_force(normal_stiffness, p, gap, centre_velocity.normal_dashpot);
     centre_normal = normal;
-    centre_slip_x = velocity.x + spin.x;
-    centre_slip_z = velocity.z + spin.z;
-    const Vector3<T> friction = shear_contact<Law>(model, p, gap < zero, active, normal, shear_stiffness, centre_slip_x,
-                                                   centre_slip_z, points[1]);
+    centre_slip_x = centre_velocity.spring.slip_x;
+    centre_slip_z = centre_velocity.spring.slip_z;
+    const Vector3<T> friction =
+        shear_contact<Law>(model, p, gap < zero, active, normal, shear_stiffness, centre_velocity, points[1]);
     const Vector3<T> contact{friction.x, normal, friction.z};
     force = {force.x + contact.x, force.y + contact.y, force.z + contact.z};
     const Vector3<T> moment = cross(lever, contact);
@@ -243,8 +264,8 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   const T bearing = rim_normal + centre_normal;
   const auto bears = running && bearing > zero;
   const T weight = broadcast<T>(1.0) / select(bears, bearing, broadcast<T>(1.0));
-  const T bearing_x = (rim_normal * (velocity.x + rim_spin.x) + centre_normal * centre_slip_x) * weight;
-  const T bearing_z = (rim_normal * (velocity.z + rim_spin.z) + centre_normal * centre_slip_z) * weight;
+  const T bearing_x = (rim_normal * rim_velocity.spring.slip_x + centre_normal * centre_slip_x) * weight;
+  const T bearing_z = (rim_normal * rim_velocity.spring.slip_z + centre_normal * centre_slip_z) * weight;
   r.slip_x = select(bears, r.slip_x + bearing_x * dt, r.slip_x);
   r.slip_z = select(bears, r.slip_z + bearing_z * dt, r.slip_z);
   r.max_slip = lane::max(lane::sqrt(r.slip_x * r.slip_x + r.slip_z * r.slip_z), r.max_slip);
@@ -257,7 +278,8 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   const T ax = force.x * p.inverse_mass - p.horizontal_scale * table_x;
   const T ay = force.y * p.inverse_mass - (broadcast<T>(model.gravity) + p.vertical_scale * table_vertical);
   const T az = force.z * p.inverse_mass - p.horizontal_scale * table_z;
-  const T vx = body.vx + ax * dt, vy = body.vy + ay * dt, vz = body.vz + az * dt;
+  const T kick_vx = ax * dt, kick_vy = ay * dt, kick_vz = az * dt;
+  const T vx = body.vx + kick_vx, vy = body.vy + kick_vy, vz = body.vz + kick_vz;
   const Vector3<T> body_torque = rotation.apply_transpose(torque);
   Vector3<T> pi{body.pi_x + body_torque.x * dt, body.pi_y + body_torque.y * dt, body.pi_z + body_torque.z * dt};
   Quaternion<T> next = q;
@@ -266,6 +288,12 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   body.x = select(running, body.x + vx * dt, body.x);
   body.y = select(running, body.y + vy * dt, body.y);
   body.z = select(running, body.z + vz * dt, body.z);
+  body.kick_vx = select(running, kick_vx, body.kick_vx);
+  body.kick_vy = select(running, kick_vy, body.kick_vy);
+  body.kick_vz = select(running, kick_vz, body.kick_vz);
+  body.kick_pi_x = select(running, pi.x - body.pi_x, body.kick_pi_x);
+  body.kick_pi_y = select(running, pi.y - body.pi_y, body.kick_pi_y);
+  body.kick_pi_z = select(running, pi.z - body.pi_z, body.kick_pi_z);
   body.vx = select(running, vx, body.vx);
   body.vy = select(running, vy, body.vy);
   body.vz = select(running, vz, body.vz);

@@ -204,6 +204,13 @@ int way_taken(const Model& m, const LaneParameters<Wide>& p, const Wide& slip_sp
   return is_evaluated ? (is_floor ? 0 : -1) : 1;
 }
 
+// The source paper's slider: every term reads the half-step velocity.
+template <class T>
+SliderVelocities<T> half_step(const T& normal_velocity, const T& slip_velocity, const T& slip_z = T(0.0)) {
+  const ContactVelocity<T> half{normal_velocity, slip_velocity, slip_z};
+  return slider_velocities(0, half, half);
+}
+
 // The test's situations must send many batches each way through friction_limit (of 10,000:
 // 230 to 2,400 take the floor, depending on the law and table).
 void expect_both_ways(const int (&ways)[2]) {
@@ -224,7 +231,7 @@ void expect_the_law_2d(int table) {
       // One lane alone.
       const Situation& s = *lanes[l];
       const CornerContact<double> got =
-          corner_contact<Law>(m, s.p, 0, s.gap, s.normal_velocity, s.slip_velocity, {s.shear_spring, s.slipping});
+          corner_contact<Law>(m, s.p, 0, s.gap, half_step(s.normal_velocity, s.slip_velocity), {s.shear_spring, s.slipping});
       const CornerContact<double> want = law_2d<Law>(m, s);
       ASSERT_TRUE(same_bits(got.normal_force, want.normal_force));
       ASSERT_TRUE(same_bits(got.shear_force, want.shear_force)) << got.shear_force << " vs " << want.shear_force;
@@ -238,7 +245,7 @@ void expect_the_law_2d(int table) {
     const Wide slip = wide_of(lanes, [](const Situation& s) { return s.slip_velocity; });
     const CornerState<Wide> previous{wide_of(lanes, [](const Situation& s) { return s.shear_spring; }),
                                      wide_of(lanes, [](const Situation& s) { return s.slipping; })};
-    const CornerContact<Wide> got = corner_contact<Law>(m, p, 0, gap, normal_velocity, slip, previous);
+    const CornerContact<Wide> got = corner_contact<Law>(m, p, 0, gap, half_step(normal_velocity, slip), previous);
     for (std::size_t l = 0; l < kWidth; ++l) {
       const CornerContact<double> want = law_2d<Law>(m, *lanes[l]);
       ASSERT_TRUE(same_bits(lane_of(got.normal_force, l), want.normal_force));
@@ -277,7 +284,7 @@ void expect_the_law_3d(int table) {
       const double normal = normal_force(m.corner_normal_stiffness[0], s.p, s.gap, s.normal_velocity);
       ContactState3D<double> got_state = state_3d(s), want_state = state_3d(s);
       const Vector3<double> got = shear_contact<Law>(m, s.p, s.gap < 0.0, true, normal, m.corner_shear_stiffness[0],
-                                                     s.slip_velocity, s.slip_z, got_state);
+                                                     half_step(s.normal_velocity, s.slip_velocity, s.slip_z), got_state);
       const Vector3<double> want = law_3d<Law>(m, s, want_state);
       ASSERT_TRUE(same_bits(got.x, want.x)) << got.x << " vs " << want.x;
       ASSERT_TRUE(same_bits(got.z, want.z));
@@ -298,8 +305,8 @@ void expect_the_law_3d(int table) {
                                       wide_of(lanes, [](const Situation& s) { return s.slipping; })};
     ContactState3D<Wide> state = before;
     const Wide ks(m.corner_shear_stiffness[0]);
-    const Vector3<Wide> got = shear_contact<Law>(m, p, gap < Wide(0.0), Wide(0.0) == Wide(0.0), normal, ks, slip_x,
-                                                 slip_z, state);
+    const Vector3<Wide> got = shear_contact<Law>(m, p, gap < Wide(0.0), Wide(0.0) == Wide(0.0), normal, ks,
+                                                 half_step(Wide(0.0), slip_x, slip_z), state);
     for (std::size_t l = 0; l < kWidth; ++l) {
       ContactState3D<double> want_state = state_3d(*lanes[l]);
       const Vector3<double> want = law_3d<Law>(m, *lanes[l], want_state);
