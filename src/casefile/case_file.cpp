@@ -1,3 +1,4 @@
+#include "model/build.h"
 #include "casefile/case_file.h"
 
 #include <cctype>
@@ -226,6 +227,7 @@ void read_integration(TableReader& root, Case& c) {
   c.model.safety_factor = t.in_range("safety_factor", t.quantity_or("safety_factor", Dimension::dimensionless, 0.01), 1e-6, 1.0);
   c.model.contact_stiffness_scale = t.in_range(
       "contact_stiffness_scale", t.quantity_or("contact_stiffness_scale", Dimension::dimensionless, 1.0), 1e-4, 1.0);
+  c.model.whole_step_terms = whole_step_terms_of(t.choice("slider", slider_names(), slider_name_of(c.model.whole_step_terms)));
   c.duration = t.in_range("duration", t.quantity_or("duration", Dimension::time, 0.0), 0.0, kLongestDuration);
   c.settle_time = t.in_range("settle_time", t.quantity_or("settle_time", Dimension::time, 2.0), 0.0, kLongestDuration);
   c.settle_time_given = t.has("settle_time");
@@ -448,7 +450,7 @@ const KeySchema& shared_case_keys() {
       {"contact.barkan", {"shear_modulus", "poisson_ratio", "beta_z", "beta_x"}},
       {"friction", {"law", "coefficient", "static", "kinetic", "decay_speed", "table", "table_file"}},
       {"damping", {"ratio", "frequency"}},
-      {"integration", {"safety_factor", "contact_stiffness_scale", "duration", "settle_time", "rest_cap"}},
+      {"integration", {"safety_factor", "contact_stiffness_scale", "slider", "duration", "settle_time", "rest_cap"}},
       {"limits", {"tip_over_angle", "lift_off_height", "pad_half_width"}},
   };
   return schema;

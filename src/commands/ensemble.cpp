@@ -7,6 +7,7 @@
 #include <iomanip>
 #include <iostream>
 
+#include "model/build.h"
 #include "commands/commands.h"
 #include "commands/validators.h"
 #include "core/error.h"
@@ -76,7 +77,8 @@ void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const
               << (spec.outer_count() > 1 ? std::to_string(spec.outer_count()) + " epistemic outer points x " : "")
               << spec.levels.size() << " stripes x " << spec.realisations_per_stripe << ", " << plan.motion_count()
               << " motions)\n";
-    std::cout << "time step       " << plan.model().time_step << " s, alpha " << plan.stability_angle() << " rad\n";
+    std::cout << "time step       " << plan.model().time_step << " s (" << slider_name_of(plan.model().whole_step_terms)
+              << " slider), alpha " << plan.stability_angle() << " rad\n";
     if (device) {
       const std::int64_t lanes =
           std::min<std::int64_t>(plan.size(), device->lane_capacity(plan.three_d() ? 3 : 2, plan.model().friction_law));

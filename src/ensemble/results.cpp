@@ -1,3 +1,4 @@
+#include "model/build.h"
 #include "ensemble/results.h"
 
 #include <cmath>
@@ -165,6 +166,7 @@ std::vector<char> result_image(const std::filesystem::path& file, const Ensemble
     root.attribute("non_finite", non_finite);
     root.attribute("dimensions", std::int64_t(plan.three_d() ? 3 : 2));
     root.attribute("time_step_s", plan.model().time_step);
+    root.attribute("slider", slider_name_of(plan.model().whole_step_terms));
     root.attribute("stability_angle_rad", plan.stability_angle());
     root.attribute("frequency_parameter_rad_s", plan.frequency_parameter());
     root.attribute("intensity_measure", intensity_name(spec.measure));

@@ -1,3 +1,4 @@
+#include "model/build.h"
 #include "io/run_output.h"
 
 #include <spawn.h>
@@ -61,7 +62,8 @@ void print_summary(std::ostream& out, const RunReport& report) {
   const ModelFacts& f = report.facts;
   out << std::setprecision(4);
   out << "case            " << (report.source ? report.source->title : "") << "\n";
-  out << "time step       " << s.time_step << " s (" << s.steps << " steps, " << report.wall_seconds << " s wall)\n";
+  out << "time step       " << s.time_step << " s (" << s.steps << " steps, " << report.wall_seconds << " s wall), "
+      << slider_name_of(report.model.whole_step_terms) << " slider\n";
   out << "alpha           " << s.stability_angle << " rad (" << units::rad_to_deg(s.stability_angle) << " deg)\n";
   out << "contact         K_n " << f.total_normal_stiffness << " N/m, static penetration " << f.static_penetration
       << " m, beta " << f.damping_beta << " s\n";
@@ -168,6 +170,7 @@ void write_run_hdf5(const std::filesystem::path& file, const RunReport& report) 
   model.attribute("damping_beta_s", report.facts.damping_beta);
   model.attribute("natural_frequency_rad_s", report.facts.natural_frequency);
   model.attribute("tip_over_angle_rad", m.tip_over_angle);
+  model.attribute("slider", slider_name_of(m.whole_step_terms));
   if (report.source) {
     model.attribute("mass_kg", report.source->parameters.mass);
     model.attribute("inertia_kg_m2", report.source->parameters.inertia);

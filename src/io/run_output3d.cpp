@@ -1,3 +1,4 @@
+#include "model/build.h"
 #include "io/run_output3d.h"
 
 #include <cmath>
@@ -52,7 +53,8 @@ void print_summary3d(std::ostream& out, const RunReport3D& report) {
   const RunSummary3D& s = report.result.summary;
   out << std::setprecision(4);
   out << "case            " << (report.source ? report.source->title : "") << " (3D)\n";
-  out << "time step       " << s.time_step << " s (" << report.wall_seconds << " s wall)\n";
+  out << "time step       " << s.time_step << " s (" << report.wall_seconds << " s wall), "
+      << slider_name_of(report.model.model.whole_step_terms) << " slider\n";
   out << "alpha           " << s.stability_angle << " rad (" << units::rad_to_deg(s.stability_angle) << " deg)\n";
   out << "motion          incidence " << units::rad_to_deg(report.motions.incidence) << " deg, scale "
       << report.motions.scale_factor;
@@ -159,6 +161,7 @@ void write_run_hdf5_3d(const std::filesystem::path& file, const RunReport3D& rep
   model.attribute("centre_of_mass_height_m", report.parameters.centre_of_mass.y);
   model.attribute("standing_normal_stiffness_N_m", standing_stiffness(report.model.contacts));
   model.attribute("tip_over_angle_rad", report.model.model.tip_over_angle);
+  model.attribute("slider", slider_name_of(report.model.model.whole_step_terms));
 
   if (!h.time.empty()) {
     hdf5::Group history = root.group("history");

@@ -74,6 +74,43 @@ ModelFacts model_facts(const Model& model, const ModelSpec& spec, const Realisat
   return f;
 }
 
+namespace {
+struct SliderScheme {
+  const char* name;
+  std::int32_t whole_step_terms;
+};
+constexpr SliderScheme kSliderSchemes[] = {
+    {"half-step", 0},
+    {"whole-step", kWholeStepSlider},
+    {"whole-step-normal-dashpot", kWholeStepNormalDashpot},
+    {"whole-step-shear-dashpot", kWholeStepShearDashpot},
+    {"whole-step-friction", kWholeStepFriction},
+};
+}  // namespace
+
+const std::vector<std::string>& slider_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all;
+    for (const SliderScheme& scheme : kSliderSchemes) all.emplace_back(scheme.name);
+    return all;
+  }();
+  return names;
+}
+
+std::int32_t whole_step_terms_of(const std::string& slider_name) {
+  for (const SliderScheme& scheme : kSliderSchemes) {
+    if (slider_name == scheme.name) return scheme.whole_step_terms;
+  }
+  throw std::invalid_argument("unknown slider scheme '" + slider_name + "'");
+}
+
+std::string slider_name_of(std::int32_t whole_step_terms) {
+  for (const SliderScheme& scheme : kSliderSchemes) {
+    if (whole_step_terms == scheme.whole_step_terms) return scheme.name;
+  }
+  return "whole-step terms " + std::to_string(whole_step_terms);
+}
+
 Model build_model(const ModelSpec& spec, const RealisationParameters& nominal) {
   const std::vector<ContactCorner> corners = contact_corners(spec.section);
   if (static_cast<int>(corners.size()) > kMaxCorners) {
@@ -129,6 +166,7 @@ Model build_model(const ModelSpec& spec, const RealisationParameters& nominal) {
         spec.contact_stiffness_scale * spec.stiffness.shear * contact[k].contact_length * spec.section.depth;
   }
   m.contact_stiffness_scale = spec.contact_stiffness_scale;
+  m.whole_step_terms = spec.whole_step_terms;
   m.rounding_radius = spec.section.rounding;
   m.friction_law = spec.friction_law;
   if (spec.friction_law == FrictionLaw::tabulated) set_friction_table(m, spec.friction_table);

@@ -13,6 +13,8 @@
 // stiffness scaling by s (ModelSpec::contact_stiffness_scale) multiplies K by s and a given
 // w by sqrt(s): the softened contact keeps its damping ratio, and so nearly its restitution.
 
+#include <cstdint>
+#include <string>
 #include <utility>
 #include <vector>
 
@@ -24,6 +26,14 @@
 
 namespace caskdem {
 
+// The slider schemes by name, as case and ensemble files give them ([integration] slider):
+// "half-step" (the source paper's), "whole-step" (every term), and one term alone for studying
+// what each contributes ("whole-step-normal-dashpot", "whole-step-shear-dashpot",
+// "whole-step-friction").
+const std::vector<std::string>& slider_names();
+std::int32_t whole_step_terms_of(const std::string& slider_name);
+std::string slider_name_of(std::int32_t whole_step_terms);
+
 struct ModelSpec {
   Section section;
   DistributedStiffness stiffness;
@@ -34,6 +44,9 @@ struct ModelSpec {
   // springs times this factor, a given damping frequency times its square root (the damping
   // ratio kept at the softened contact's frequency), so the step grows by 1/sqrt(factor).
   double contact_stiffness_scale = 1.0;
+  // The spring-slider's velocity-dependent terms read at the whole step (WholeStepTerm bits,
+  // kernels/slider.h); 0: the source paper's half-step scheme.
+  std::int32_t whole_step_terms = 0;
   double time_step = 0.0;        // s; 0: from f_s and the nominal mass
   double tip_over_angle = 0.0;   // rad; 0: pi/2 (lying on its side)
   double lift_off_height = 0.0;  // m; 0: a quarter of the section's height

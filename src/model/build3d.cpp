@@ -103,6 +103,7 @@ Model3D build_model3d(const ModelSpec& spec, const CaskSpec3D& cask, const Reali
   Model& m = out.model;
   m.corner_count = 0;
   m.contact_stiffness_scale = scale;
+  m.whole_step_terms = spec.whole_step_terms;
   m.friction_law = spec.friction_law;
   if (spec.friction_law == FrictionLaw::tabulated) set_friction_table(m, spec.friction_table);
   m.gravity = spec.gravity;

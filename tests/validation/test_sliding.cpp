@@ -67,7 +67,7 @@ TEST(Sliding, WideBlockFollowsRigidPlasticTwoWaySliding) {
 }
 
 // The max slide under two sines (0.6 g at 2 Hz and 0.18 g at 5.4 Hz, so stick and slip
-// alternate irregularly) at f_s = 0.0025 .. 0.04, halving. A convergence study: the change from
+// alternate irregularly) at f_s = 0.0025 .. 0.04, halving, with the source paper's half-step slider. A convergence study: the change from
 // the finest step must shrink at least in proportion to the step (first order or better), down to
 // the contact's chatter (3e-6 of the slide), and be small over the whole range. The observed order
 // is recorded: it is first (0.85 to 1.1), the dashpots and the friction coefficient being read at
@@ -104,6 +104,68 @@ TEST(Sliding, MaxSlideConvergesAsTheStepFalls) {
     }
     // And the answer is near its limit: the coarsest step is within 2e-4 of the finest.
     EXPECT_LT(std::abs(slide.back() / slide.front() - 1.0), 2e-4) << name;
+  }
+}
+
+// The whole-step slider (kernels/slider.h) on the same block and table: second order. The slide
+// history is sampled at the coarsest step's times, which every finer step meets exactly (each
+// step half the next), and the RMS change between successive steps, f_s = 0.0003125 .. 0.04, is
+// fitted against the step on log scales: its slope is the observed order. The histories rather
+// than the max slide, because what is left at these steps is 1e-10 to 1e-7 m, where one sample's
+// max moves with the contact's chatter. The half-step slider, measured the same way, has order
+// 1.00 for both laws (the change halves with the step).
+//
+// A steeply falling law keeps part of a first-order error: the onset of a slide under velocity
+// weakening is an instability (the slip speed grows as exp(lambda t), lambda ~ (mu_s - mu_k) g /
+// v0 near rest), so the slide's start is set by the small speeds at its onset, which the step
+// resolves only to first order; the velocity error is set there and carried through the slide.
+// With mu 0.3 -> 0.2 over v0 = 0.05 m/s (lambda ~ 20 /s) the order is 1.4; over v0 = 0.5 m/s
+// (lambda ~ 2 /s) it is second. Both are asserted as measured: the steep law at least 1.25, so
+// that a return to the half-step's first order fails.
+TEST(Sliding, WholeStepSliderIsSecondOrder) {
+  struct Law {
+    const char* name;
+    FrictionLaw law;
+    double friction_static, decay_speed, least_order;
+  };
+  for (const Law& law : {Law{"constant", FrictionLaw::constant, 0.2, 0.05, 1.8},
+                         Law{"exponential, v0 0.5 m/s", FrictionLaw::exponential, 0.3, 0.5, 1.8},
+                         Law{"exponential, v0 0.05 m/s", FrictionLaw::exponential, 0.3, 0.05, 1.25}}) {
+    std::vector<double> safety_factors;
+    for (double f = 0.0003125; f <= 0.04 + 1e-12; f *= 2.0) safety_factors.push_back(f);
+    std::vector<std::vector<double>> slides;
+    double sample_interval = 0.0;
+    for (auto f = safety_factors.rbegin(); f != safety_factors.rend(); ++f) {  // coarsest first: it sets the samples
+      Case c = wide_block();
+      c.model.safety_factor = *f;
+      c.model.whole_step_terms = kWholeStepSlider;
+      c.model.friction_law = law.law;
+      c.parameters.friction_static = law.friction_static;
+      c.parameters.friction_kinetic = 0.2;
+      c.parameters.friction_decay_speed = law.decay_speed;
+      const testing::Prepared p = testing::prepare(c);
+      if (sample_interval == 0.0) sample_interval = p.model.time_step;
+      const double amplitude = 0.6 * p.model.gravity, omega = 2.0 * std::numbers::pi * 2.0;
+      testing::FunctionMotion table(
+          [=](double t) { return amplitude * (std::sin(omega * t) + 0.3 * std::sin(2.7 * omega * t)); }, 4.0);
+      const RunResult run =
+          simulate(p.model, p.lane, rest_state(p.model, p.lane), {&table, nullptr}, {4.0, sample_interval});
+      slides.insert(slides.begin(), run.history.slide);
+    }
+    // Least squares of log2(change) on log2(f_s).
+    double sx = 0.0, sy = 0.0, sxx = 0.0, sxy = 0.0;
+    const int n = static_cast<int>(slides.size()) - 1;
+    for (int k = 0; k < n; ++k) {
+      const std::size_t samples = std::min(slides[k].size(), slides[k + 1].size());
+      ASSERT_GT(samples, 1000u);
+      double sum = 0.0;
+      for (std::size_t i = 0; i < samples; ++i) sum += (slides[k + 1][i] - slides[k][i]) * (slides[k + 1][i] - slides[k][i]);
+      const double x = std::log2(safety_factors[k + 1]), y = std::log2(std::sqrt(sum / samples));
+      sx += x; sy += y; sxx += x * x; sxy += x * y;
+    }
+    const double order = (n * sxy - sx * sy) / (n * sxx - sx * sx);
+    RecordProperty(std::string(law.name) + " order", std::to_string(order));
+    EXPECT_GE(order, law.least_order) << law.name;
   }
 }
 
