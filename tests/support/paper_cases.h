@@ -1,6 +1,7 @@
 #pragma once
 // The shipped case files, loaded for tests, and small helpers around a run.
 
+#include <cstdint>
 #include <string>
 
 #include "casefile/case_file.h"
@@ -15,6 +16,10 @@ inline std::string motion_path(const std::string& name) { return std::string(CAS
 
 // The source paper's 1/3 model cask, as shipped.
 inline Case one_third_model() { return load_case(case_path("model-1-3-sine.toml")); }
+
+// The slider schemes a validation runs with: the source paper's half-step one and the whole-step
+// one (kernels/slider.h); each check holds for both, with the same tolerance.
+inline constexpr std::int32_t kBothSliders[] = {0, kWholeStepSlider};
 
 struct Prepared {
   Model model;
