@@ -158,6 +158,19 @@ TEST_F(CaseErrors, MessagesShowSmallValuesAsGiven) {
   EXPECT_THAT(error_of(file), HasSubstr("key integration.safety_factor: expected a value between 1e-06 and 1, got 1e-09"));
 }
 
+TEST_F(CaseErrors, AnUnknownSliderIsRefusedWithTheSchemes) {
+  const auto file = variant("slider", "safety_factor = 0.01", "safety_factor = 0.01\nslider = \"full-step\"");
+  const std::string e = error_of(file);
+  EXPECT_THAT(e, HasSubstr(":" + std::to_string(line_of(file, "slider = ")) + ": key integration.slider"));
+  EXPECT_THAT(e, HasSubstr("\"half-step\", \"whole-step\""));
+}
+
+TEST_F(CaseErrors, TheSliderIsReadFromTheCase) {
+  const auto file = variant("whole-step", "safety_factor = 0.01", "safety_factor = 0.01\nslider = \"whole-step\"");
+  EXPECT_EQ(load_case(file).model.whole_step_terms, kWholeStepSlider);
+  EXPECT_EQ(load_case(testing::case_path("model-1-3-sine.toml")).model.whole_step_terms, 0) << "the paper's by default";
+}
+
 TEST_F(CaseErrors, ShakingLongerThanADayIsRefused) {
   const auto file = variant("cycles", "cycles = 10", "cycles = 1e15");
   EXPECT_THAT(error_of(file), HasSubstr("key motion.cycles: expected at most 100000 s of shaking"));

@@ -145,6 +145,18 @@ TEST_P(DeviceLanesTest, HostLanesGiveTheCpuBitsWithEveryFrictionLaw) {
   }
 }
 
+// The whole-step slider (its velocity kicks are lane state the queue carries) on both casks.
+TEST_P(DeviceLanesTest, HostLanesGiveTheCpuBitsWithTheWholeStepSlider) {
+  EnsembleSpec spec = load_ensemble(kData + GetParam());
+  spec.realisations_per_stripe = spec.three_d() ? 3 : 8;
+  spec.base.model.whole_step_terms = kWholeStepSlider;
+  const EnsemblePlan plan(spec, InstructionSet::scalar);
+  const MotionTables tables(plan);
+  const std::vector<std::int64_t> all = all_of(plan);
+  expect_same(on_host_lanes(plan, tables, all, {6, 9, 3000}), on_cpu(plan, tables, all),
+              std::string(GetParam()) + ", whole-step slider");
+}
+
 // A resumed run's pending realisations are not contiguous: any subset in any order.
 TEST_P(DeviceLanesTest, AnySubsetGivesItsRealisationsTheirBits) {
   EnsembleSpec spec = load_ensemble(kData + GetParam());

@@ -115,6 +115,23 @@ TEST(Ensemble3D, SameBitsOnEveryInstructionSetThreadCountBlockSizeAndSchedule) {
   EXPECT_TRUE(same_bits(bits_of(run(plan, some, 16, InstructionSet::automatic, 2, true, 0)), reference));
 }
 
+// The whole-step slider in 3D: the scalar lanes' bits on every instruction set, and not the
+// half-step slider's.
+TEST(Ensemble3D, WholeStepSliderSameBitsOnEveryInstructionSet) {
+  EnsembleSpec spec = load_ensemble(kEnsemble);
+  spec.base.model.whole_step_terms = kWholeStepSlider;
+  const EnsemblePlan plan(spec, InstructionSet::automatic);
+  const EnsemblePlan half_step(load_ensemble(kEnsemble), InstructionSet::automatic);
+  std::vector<std::int64_t> some;
+  for (std::int64_t i = 0; i < plan.size(); i += 8) some.push_back(i);
+  const std::vector<double> reference = bits_of(run(plan, some, 16, InstructionSet::scalar, 1));
+  EXPECT_FALSE(same_bits(bits_of(run(half_step, some, 16, InstructionSet::scalar, 1)), reference));
+  for (InstructionSet isa : {InstructionSet::sse2, InstructionSet::avx2, InstructionSet::avx512f}) {
+    if (!instruction_set_available(isa)) continue;
+    EXPECT_TRUE(same_bits(bits_of(run(plan, some, 8, isa, 2, true)), reference)) << instruction_set_name(isa);
+  }
+}
+
 // Without [uncertain.incidence], a 3D ensemble turns each realisation's pair uniformly over
 // [0, 180) degrees: in each stripe of n (Latin hypercube) one incidence in each of n equal strata.
 TEST(Ensemble3D, IncidenceIsUniformOverHalfATurnByDefault) {

@@ -139,6 +139,21 @@ TEST_F(Reproducibility, NoLaneRidesStoppedWhileRealisationsWait) {
   EXPECT_EQ(refilled.stopped_while_waiting, 0.0);
 }
 
+// The whole-step slider: the same bits on every instruction set and thread count as its scalar
+// reference, and not the half-step slider's bits (its terms are in the step).
+TEST_F(Reproducibility, WholeStepSliderSameBitsOnEveryInstructionSetAndThreadCount) {
+  EnsembleSpec spec = *spec_;
+  spec.base.model.whole_step_terms = kWholeStepSlider;
+  const EnsemblePlan plan(spec, InstructionSet::scalar);
+  const std::uint64_t reference = hash_of(run(plan, all_, 1, InstructionSet::scalar, 1, false));
+  EXPECT_NE(reference, reference_);
+  for (InstructionSet isa : {InstructionSet::sse2, InstructionSet::avx2, InstructionSet::avx512f}) {
+    if (!instruction_set_available(isa)) continue;
+    EXPECT_EQ(hash_of(run(plan, all_, 24, isa, 2)), reference) << instruction_set_name(isa);
+  }
+  EXPECT_EQ(hash_of(run(plan, all_, 16, InstructionSet::automatic, 3, false)), reference) << "3 threads, lockstep";
+}
+
 TEST_F(Reproducibility, AnyRealisationRerunAloneGivesItsResult) {
   const std::vector<RealisationOutcome> together = run(*plan_, all_, 64, InstructionSet::automatic, 1);
   for (std::int64_t i : {std::int64_t(3), std::int64_t(41), std::int64_t(77)}) {
