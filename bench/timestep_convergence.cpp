@@ -12,11 +12,15 @@
 // is printed beside it), so the criterion tests the step, not the sampling.
 //
 //   timestep_convergence ENSEMBLE --fs 0.005,0.01,0.02,0.05,0.1 [--stiffness 1,0.25]
-//       [--hazard FILE --similarity N] [--replicates 200] [--csv ROWS.csv]
-//   timestep_convergence ENSEMBLE --variants 0.005:1,0.01:0.25,... (f_s:contact stiffness scale)
+//       [--slider whole-step] [--per-stripe N] [--hazard FILE --similarity N] [--replicates 200]
+//       [--csv ROWS.csv]
+//   timestep_convergence ENSEMBLE --variants 0.005:1,0.01:0.25:whole-step,...
+//       (f_s:contact stiffness scale[:slider])
 //
-// Every f_s with every contact-stiffness scale (model/build.h), or the listed variants. The
-// first variant is the reference. Rows are appended to --csv when given.
+// Every f_s with every contact-stiffness scale (model/build.h), or the listed variants, with
+// the ensemble's slider scheme or the one --slider names (kernels/slider.h). The first variant
+// is the reference. --per-stripe replaces the file's realisations per stripe (the same plan,
+// more draws). Rows are appended to --csv when given.
 
 #include <algorithm>
 #include <chrono>
@@ -33,6 +37,7 @@
 #include <vector>
 
 #include "core/error.h"
+#include "model/build.h"
 #include "ensemble/analysis.h"
 #include "ensemble/execute.h"
 #include "ensemble/fragility.h"
@@ -45,7 +50,10 @@ namespace {
 struct Variant {
   double safety_factor = 0.01;
   double stiffness_scale = 1.0;  // contact-frequency scaling (1: the model as given)
+  std::int32_t whole_step_terms = 0;  // the slider scheme (model/build.h, slider_names)
 };
+
+std::string slider_of(const Variant& v) { return slider_name_of(v.whole_step_terms); }
 
 struct Answers {
   bool fitted = false;
@@ -74,6 +82,7 @@ Run run_variant(const EnsembleSpec& base_spec, const Variant& variant) {
   EnsembleSpec spec = base_spec;
   spec.base.model.safety_factor = variant.safety_factor;
   spec.base.model.contact_stiffness_scale = variant.stiffness_scale;
+  spec.base.model.whole_step_terms = variant.whole_step_terms;
   const EnsemblePlan plan(spec, InstructionSet::automatic);
   ExecuteOptions options;
   options.progress = false;
@@ -156,7 +165,9 @@ int program(int argc, char** argv) {
   double similarity = 1.0;
   int replicates = 200;
   std::string csv;
-  std::vector<std::pair<double, double>> listed;
+  std::vector<Variant> listed;
+  std::optional<std::int32_t> slider;
+  std::optional<std::int64_t> per_stripe;
   for (int a = 2; a + 1 < argc; a += 2) {
     const std::string key = argv[a], value = argv[a + 1];
     if (key == "--fs") safety_factors = number_list(value);
@@ -165,10 +176,16 @@ int program(int argc, char** argv) {
       std::stringstream in(value);
       std::string item;
       while (std::getline(in, item, ',')) {
-        const auto colon = item.find(':');
-        listed.push_back({std::stod(item.substr(0, colon)), colon == std::string::npos ? 1.0 : std::stod(item.substr(colon + 1))});
+        std::stringstream fields(item);
+        std::string f, k, s;
+        std::getline(fields, f, ':');
+        std::getline(fields, k, ':');
+        std::getline(fields, s, ':');
+        listed.push_back({std::stod(f), k.empty() ? 1.0 : std::stod(k), s.empty() ? -1 : whole_step_terms_of(s)});
       }
     }
+    else if (key == "--slider") slider = whole_step_terms_of(value);
+    else if (key == "--per-stripe") per_stripe = std::stoll(value);
     else if (key == "--hazard") hazard = risk::read_hazard_curve(value);
     else if (key == "--similarity") similarity = std::stod(value);
     else if (key == "--replicates") replicates = std::stoi(value);
@@ -178,23 +195,27 @@ int program(int argc, char** argv) {
       return 2;
     }
   }
-  const EnsembleSpec spec = load_ensemble(file);
+  EnsembleSpec spec = load_ensemble(file);
+  if (per_stripe) spec.realisations_per_stripe = *per_stripe;
+  const std::int32_t default_slider = slider ? *slider : spec.base.model.whole_step_terms;
   // A 1/N model's velocities are the prototype's over sqrt(N) (caskdem risk --similarity).
   const double to_prototype = spec.measure == IntensityMeasure::pgv ? std::sqrt(similarity) : 1.0;
 
   std::vector<Variant> variants;
   for (double k : stiffness) {
-    for (double f : safety_factors) variants.push_back({f, k});
+    for (double f : safety_factors) variants.push_back({f, k, default_slider});
   }
   if (!listed.empty()) {
-    variants.clear();
-    for (const auto& [f, k] : listed) variants.push_back({f, k});
+    variants = listed;
+    for (Variant& v : variants) {
+      if (v.whole_step_terms < 0) v.whole_step_terms = default_slider;
+    }
   }
   std::vector<Run> runs;
   std::vector<Variant> ran;
   for (const Variant& v : variants) {
-    std::cerr << file.stem().string() << ": f_s " << v.safety_factor << ", stiffness x" << v.stiffness_scale << " ..."
-              << std::flush;
+    std::cerr << file.stem().string() << ": f_s " << v.safety_factor << ", stiffness x" << v.stiffness_scale << ", "
+              << slider_of(v) << " slider ..." << std::flush;
     // A step the model refuses (unstable, or a restitution it cannot reach) is reported, not fatal.
     try {
       runs.push_back(run_variant(spec, v));
@@ -247,16 +268,17 @@ int program(int argc, char** argv) {
     if (fresh) {
       rows << "ensemble,limit_state,safety_factor,stiffness_scale,time_step_s,wall_s,median,beta,annual_frequency,"
               "d_median_rel,d_median_lo,d_median_hi,median_band_rel,d_beta,d_beta_lo,d_beta_hi,beta_band,"
-              "d_frequency_rel,frequency_band_rel,worst_stripe,d_stripe,stripe_band,worst_ratio,acceptable\n";
+              "d_frequency_rel,frequency_band_rel,worst_stripe,d_stripe,stripe_band,worst_ratio,acceptable,slider,"
+              "realisations\n";
     }
   }
 
   std::cout << "\n## " << file.filename().string() << " (" << size << " realisations, " << replicates
             << " paired bootstrap replicates; reference f_s " << variants[0].safety_factor << ", stiffness x"
-            << variants[0].stiffness_scale << ")\n\n"
-            << "| limit state | f_s | stiffness | median | d median (paired 95 %) | band/4 | beta | d beta (paired 95 %) |"
+            << variants[0].stiffness_scale << ", " << slider_of(variants[0]) << " slider)\n\n"
+            << "| limit state | f_s | stiffness | slider | median | d median (paired 95 %) | band/4 | beta | d beta (paired 95 %) |"
                " band/4 | worst stripe d p | CP/4 | d annual freq. | band/4 | acceptable |\n"
-            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
+            << "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
   for (std::size_t l = 0; l < spec.limit_states.size(); ++l) {
     const int ls = static_cast<int>(l);
     const Answers reference = answers(runs[0], ls, everything, spec, hazard, to_prototype);
@@ -316,7 +338,8 @@ int program(int argc, char** argv) {
       const bool acceptable = worst_ratio < 1.0;
       const auto pct = [](double x) { return fixed(100.0 * x, 2) + " %"; };
       std::cout << "| " << spec.limit_states[l].name << " | " << general(variants[v].safety_factor) << " | x"
-                << general(variants[v].stiffness_scale) << " | " << general(here.median) << " | " << pct(dm) << " ("
+                << general(variants[v].stiffness_scale) << " | " << slider_of(variants[v]) << " | "
+                << general(here.median) << " | " << pct(dm) << " ("
                 << pct(quantile(d_median, 0.025)) << " to " << pct(quantile(d_median, 0.975)) << ") | "
                 << pct(median_band / 4.0) << " | " << fixed(here.beta, 3) << " | " << fixed(db, 3) << " ("
                 << fixed(quantile(d_beta, 0.025), 3) << " to " << fixed(quantile(d_beta, 0.975), 3) << ") | "
@@ -331,12 +354,15 @@ int program(int argc, char** argv) {
              << quantile(d_median, 0.025) << ',' << quantile(d_median, 0.975) << ',' << median_band << ',' << db << ','
              << quantile(d_beta, 0.025) << ',' << quantile(d_beta, 0.975) << ',' << beta_band << ',' << df << ','
              << frequency_band << ',' << worst + 1 << ',' << worst_d << ',' << worst_band << ',' << worst_ratio << ','
-             << (v == 0 ? "reference" : acceptable ? "yes" : "no") << '\n';
+             << (v == 0 ? "reference" : acceptable ? "yes" : "no") << ',' << slider_of(variants[v]) << ',' << size << '\n';
       }
     }
   }
   std::cout << "\nwall time per variant:";
-  for (const Run& r : runs) std::cout << " f_s " << r.variant.safety_factor << " x" << r.variant.stiffness_scale << ": " << fixed(r.wall_seconds, 1) << " s;";
+  for (const Run& r : runs) {
+    std::cout << " f_s " << r.variant.safety_factor << " x" << r.variant.stiffness_scale << " " << slider_of(r.variant)
+              << ": " << fixed(r.wall_seconds, 1) << " s;";
+  }
   std::cout << "\n";
   return 0;
 }

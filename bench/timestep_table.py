@@ -25,11 +25,11 @@ def ratio(d, band):
 rows = list(csv.DictReader(open(sys.argv[1])))
 by = defaultdict(list)
 for r in rows:
-    by[(r["ensemble"], float(r["safety_factor"]), float(r["stiffness_scale"]))].append(r)
+    by[(r["ensemble"], float(r["safety_factor"]), float(r["stiffness_scale"]), r.get("slider") or "half-step")].append(r)
 
 print("| ensemble | f_s | step | wall | worst of median, beta, annual frequency (x band/4) | which | worst stripe (x CP/4) | curves not fitted | acceptable |")
 print("|---|---|---|---|---|---|---|---|---|")
-for (ensemble, fs, k), group in by.items():
+for (ensemble, fs, k, slider), group in by.items():
     worst, which, stripe, unfitted = 0.0, "", 0.0, []
     for r in group:
         if float(r["d_median_rel"]) != float(r["d_median_rel"]):
@@ -46,5 +46,7 @@ for (ensemble, fs, k), group in by.items():
     reference = group[0]["acceptable"] == "reference"
     verdict = "reference" if reference else ("yes" if worst < 1.0 else "no")
     label = ensemble if k == 1.0 else f"{ensemble}, stiffness x{k:g}"
+    if slider != "half-step":
+        label += f", {slider} slider"
     print(f"| {label} | {fs:g} | {float(group[0]['time_step_s']):.3g} s | {float(group[0]['wall_s']):.1f} s "
           f"| {worst:.2f} | {which if not reference else '-'} | {stripe:.2f} | {', '.join(unfitted) or '-'} | {verdict} |")
