@@ -17,6 +17,8 @@
 // step; the gyroscopic coupling of Euler's equations, omega x (I omega), is what the
 // sequence of rotations about different axes produces.
 
+#include <array>
+
 #include "kernels/host_device.h"
 #include "kernels/lane.h"
 #include "kernels/portable_math.h"
@@ -62,15 +64,37 @@ CASKDEM_HOST_DEVICE inline Vector3<T> cross(const Vector3<T>& a, const Vector3<T
   return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
 }
 
-// One exact rotation about body axis j (0 = x, 1 = y, 2 = z) by theta = h pi_j / I_j.
+// sin and cos of half a step's turn. A step turns the cask by h omega, about 1e-4 rad, so where
+// every lane's angle is below 1/32 a Taylor polynomial of half sin_cos's degree (to x^9 and
+// x^10; the remainders x^11/11! and x^12/12! are below 1e-22 of the result there) gives the
+// answer to rounding. Each lane takes the polynomial or sin_cos by its own angle alone, so its
+// bits do not depend on the lanes beside it.
+template <class T>
+CASKDEM_HOST_DEVICE inline SinCos<T> sin_cos_of_turn(const T& a) {
+  using lane::broadcast;
+  static constexpr std::array<double, 4> sine_tail = {-1.0 / 6.0, 1.0 / 120.0, -1.0 / 5040.0, 1.0 / 362880.0};
+  static constexpr std::array<double, 5> cosine_tail = {-1.0 / 2.0, 1.0 / 24.0, -1.0 / 720.0, 1.0 / 40320.0,
+                                                        -1.0 / 3628800.0};
+  const T z = a * a;
+  const SinCos<T> small{a + (a * z) * estrin(z, sine_tail), broadcast<T>(1.0) + z * estrin(z, cosine_tail)};
+  const auto is_small = lane::abs(a) < broadcast<T>(0.03125);
+  if (lane::all(is_small)) return small;
+  const SinCos<T> any = sin_cos(a);
+  return {lane::select(is_small, small.sin, any.sin), lane::select(is_small, small.cos, any.cos)};
+}
+
+// One exact rotation about body axis j (0 = x, 1 = y, 2 = z) by theta = h pi_j / I_j: the
+// half angle's sine and cosine turn the quaternion, and the double-angle formulas give the
+// full angle's, cos = 1 - 2 sin^2(theta/2) (no cancellation for small angles), sin = 2 sin cos.
 template <class T>
 CASKDEM_HOST_DEVICE inline void rotate_about_body_axis(int axis, const T& h, const T& inverse_inertia, Quaternion<T>& q,
                                                        Vector3<T>& pi) {
   const T momentum = axis == 0 ? pi.x : axis == 1 ? pi.y : pi.z;
   const T theta = h * momentum * inverse_inertia;
-  const SinCos<T> full = sin_cos(theta);
-  const SinCos<T> half = sin_cos(theta * lane::broadcast<T>(0.5));
-  const T c = full.cos, s = full.sin, hc = half.cos, hs = half.sin;
+  const SinCos<T> half = sin_cos_of_turn(theta * lane::broadcast<T>(0.5));
+  const T hc = half.cos, hs = half.sin;
+  const T two = lane::broadcast<T>(2.0);
+  const T c = lane::broadcast<T>(1.0) - two * (hs * hs), s = two * (hs * hc);
   // pi <- R_j(theta)^T pi
   if (axis == 0) {
     const T y = c * pi.y + s * pi.z, z = c * pi.z - s * pi.y;
@@ -97,7 +121,9 @@ CASKDEM_HOST_DEVICE inline void rotate_about_body_axis(int axis, const T& h, con
 }
 
 // The free rotation over h (DLM's symmetric splitting), then q renormalised: the rotations
-// keep it unit to rounding, and renormalising stops that rounding from accumulating.
+// keep it unit to rounding, and renormalising stops that rounding from accumulating. |q|^2 is
+// within a few ulp of 1, so one Newton step for 1/sqrt from 1, (3 - |q|^2) / 2, is the
+// reciprocal norm to O((|q|^2 - 1)^2), below rounding, without a square root or a division.
 template <class T>
 CASKDEM_HOST_DEVICE inline void free_rotation(const T& h, const T& inverse_transverse, const T& inverse_axial,
                                               Quaternion<T>& q, Vector3<T>& pi) {
@@ -107,8 +133,9 @@ CASKDEM_HOST_DEVICE inline void free_rotation(const T& h, const T& inverse_trans
   rotate_about_body_axis(1, h, inverse_axial, q, pi);
   rotate_about_body_axis(2, half, inverse_transverse, q, pi);
   rotate_about_body_axis(0, half, inverse_transverse, q, pi);
-  const T norm = lane::sqrt(q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z);
-  q = {q.w / norm, q.x / norm, q.y / norm, q.z / norm};
+  const T norm_squared = q.w * q.w + q.x * q.x + q.y * q.y + q.z * q.z;
+  const T inverse_norm = lane::broadcast<T>(1.5) - lane::broadcast<T>(0.5) * norm_squared;
+  q = {q.w * inverse_norm, q.x * inverse_norm, q.y * inverse_norm, q.z * inverse_norm};
 }
 
 }  // namespace caskdem::kernels

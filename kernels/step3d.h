@@ -183,20 +183,35 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   // sum acts at the arc's centre of pressure, where one spring-slider carries the rim's
   // friction, slipping with the material point there (the rim touches as a point contact: no
   // friction torque about the floor normal; docs/cask3d.md says why).
+  //
+  // A node at (x_j, r, z_j) on the ring has the lever l_j = a + R (x_j, 0, z_j) - r e_y, a = R (-c_x, r - c_y, 0)
+  // the ring's centre from the centre of mass: its gap, g_a + r10 x_j + r12 z_j, and its normal
+  // velocity, v_y + (w x l_j)_y = v_a + (w_z r00 - w_x r20) x_j + (w_z r02 - w_x r22) z_j, are linear
+  // in (x_j, z_j), and the nodes' moment sum F_n,j l_j = (sum F_n,j)(a - r e_y) + R (sum F_n,j x_j, 0,
+  // sum F_n,j z_j). So each node costs two short dot products and the sums turn once.
   const RimTouch<T> rim = rim_touch(contacts, p, rotation, body.y);
-  T rim_normal = zero, rim_shear_stiffness = zero;
-  Vector3<T> pressure_moment{zero, zero, zero};  // sum of F_n,j l_j
+  const Vector3<T> ring_arm = rotation.apply({-p.centre_x, radius - p.centre_y, zero});
+  const bool normal_whole = whole_step_terms & kWholeStepNormalDashpot;
+  const Vector3<T>& normal_omega = normal_whole ? omega_n : omega;  // the normal dashpot's (kernels/slider.h)
+  const T ring_velocity = (normal_whole ? velocity_n.y : velocity.y) + normal_omega.z * ring_arm.x -
+                          normal_omega.x * ring_arm.z;
+  const T velocity_per_x = normal_omega.z * rotation.r00 - normal_omega.x * rotation.r20;
+  const T velocity_per_z = normal_omega.z * rotation.r02 - normal_omega.x * rotation.r22;
+  T rim_normal = zero, rim_shear_stiffness = zero, normal_x = zero, normal_z = zero;  // sum F_n,j (1, x_j, z_j)
   for_each_rim_node(contacts, p, rim, [&](const T& body_x, const T& body_z, const T& normal_stiffness,
                                           const T& shear_stiffness) {
-    const Vector3<T> arm = rotation.apply({body_x - p.centre_x, radius - p.centre_y, body_z});
-    const T gap = body.y + arm.y - radius;
-    const Vector3<T> lever{arm.x, arm.y - radius, arm.z};
-    const T normal = normal_force(normal_stiffness, p, gap, contact_velocities(lever).normal_dashpot);
+    const T gap = rim.centre_gap + (rotation.r10 * body_x + rotation.r12 * body_z);
+    const T normal_velocity = ring_velocity + (velocity_per_x * body_x + velocity_per_z * body_z);
+    const T normal = normal_force(normal_stiffness, p, gap, normal_velocity);
     rim_normal = rim_normal + normal;
-    pressure_moment = {pressure_moment.x + normal * lever.x, pressure_moment.y + normal * lever.y,
-                       pressure_moment.z + normal * lever.z};
+    normal_x = normal_x + normal * body_x;
+    normal_z = normal_z + normal * body_z;
     rim_shear_stiffness = rim_shear_stiffness + select(gap < zero, shear_stiffness, zero);
   });
+  const Vector3<T> turned{rotation.r00 * normal_x + rotation.r02 * normal_z, rotation.r10 * normal_x + rotation.r12 * normal_z,
+                          rotation.r20 * normal_x + rotation.r22 * normal_z};
+  const Vector3<T> pressure_moment{rim_normal * ring_arm.x + turned.x, rim_normal * (ring_arm.y - radius) + turned.y,
+                                   rim_normal * ring_arm.z + turned.z};  // sum F_n,j l_j
   const auto rim_touching = rim_shear_stiffness > zero;
   // Where no node pushes, the rim's lowest point stands in for the centre of pressure.
   const auto pushing = rim_normal > zero;
