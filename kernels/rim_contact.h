@@ -71,21 +71,34 @@ CASKDEM_HOST_DEVICE inline RimArc<T> touching_arc(const T& centre_gap, const T& 
   return {towards_cos, towards_sin, half_width};
 }
 
-// The node pair of abscissa `pair` (the nodes at +psi and -psi of Gauss node u = U a).
+// The node pair of abscissa `pair` relative to the lowest point: psi = theta - theta_0 of the node
+// ahead (the one behind is at -psi) and each node's share of K_ring.
 template <class T>
-CASKDEM_HOST_DEVICE inline void rim_node_pair(const Contacts3D& contacts, const RimArc<T>& arc, int pair,
-                                              RimNode<T>& ahead, RimNode<T>& behind) {
+struct RimPair {
+  T cos_psi, sin_psi;
+  T share;
+};
+
+template <class T>
+CASKDEM_HOST_DEVICE inline RimPair<T> rim_pair(const Contacts3D& contacts, const RimArc<T>& arc, int pair) {
   using lane::broadcast;
   const T one = broadcast<T>(1.0), two = broadcast<T>(2.0);
   const T u = arc.half_width * broadcast<T>(contacts.node_abscissa[pair]);
   const T inverse = one / (one + u * u);
   const T cos_w = (one - u * u) * inverse, sin_w = two * u * inverse;
-  const T cos_psi = cos_w * cos_w - sin_w * sin_w, sin_psi = two * sin_w * cos_w;
   // dtheta = 4 U w_j du / (1 + u^2) over [-1, 1] in Gauss's variable; / 2 pi for the share.
   const T share = broadcast<T>(contacts.node_weight[pair] * 4.0 / (2.0 * 3.14159265358979323846)) * arc.half_width * inverse;
-  const T c0 = arc.towards_cos, s0 = arc.towards_sin;
-  ahead = {c0 * cos_psi - s0 * sin_psi, s0 * cos_psi + c0 * sin_psi, share};
-  behind = {c0 * cos_psi + s0 * sin_psi, s0 * cos_psi - c0 * sin_psi, share};
+  return {cos_w * cos_w - sin_w * sin_w, two * sin_w * cos_w, share};
+}
+
+// The node pair of abscissa `pair` (the nodes at +psi and -psi of Gauss node u = U a).
+template <class T>
+CASKDEM_HOST_DEVICE inline void rim_node_pair(const Contacts3D& contacts, const RimArc<T>& arc, int pair,
+                                              RimNode<T>& ahead, RimNode<T>& behind) {
+  const RimPair<T> offset = rim_pair(contacts, arc, pair);
+  const T c0 = arc.towards_cos, s0 = arc.towards_sin, cos_psi = offset.cos_psi, sin_psi = offset.sin_psi;
+  ahead = {c0 * cos_psi - s0 * sin_psi, s0 * cos_psi + c0 * sin_psi, offset.share};
+  behind = {c0 * cos_psi + s0 * sin_psi, s0 * cos_psi - c0 * sin_psi, offset.share};
 }
 
 }  // namespace caskdem::kernels

@@ -91,8 +91,9 @@ CASKDEM_HOST_DEVICE inline void for_each_rim_node(const Contacts3D& contacts, co
 // springs that leave the arc take their share of the force with them (F_s(previous) scaled by
 // K_s / K_s(previous) when that is below 1), and springs that join it come unstretched (the
 // force kept). The centre's K_s is constant, and its force is kept as in 2D.
+// Always inlined, as rotate_about_body_axis is: a call spills every live SIMD register.
 template <FrictionLaw Law, class T, class Mask>
-CASKDEM_HOST_DEVICE inline Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p,
+CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p,
                                                     const Mask& touching, const Mask& active, const T& normal,
                                                     const T& shear_stiffness, const SliderVelocities<T>& velocity,
                                                     ContactState3D<T>& state) {
@@ -185,10 +186,14 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   // friction torque about the floor normal; docs/cask3d.md says why).
   //
   // A node at (x_j, r, z_j) on the ring has the lever l_j = a + R (x_j, 0, z_j) - r e_y, a = R (-c_x, r - c_y, 0)
-  // the ring's centre from the centre of mass: its gap, g_a + r10 x_j + r12 z_j, and its normal
-  // velocity, v_y + (w x l_j)_y = v_a + (w_z r00 - w_x r20) x_j + (w_z r02 - w_x r22) z_j, are linear
-  // in (x_j, z_j), and the nodes' moment sum F_n,j l_j = (sum F_n,j)(a - r e_y) + R (sum F_n,j x_j, 0,
-  // sum F_n,j z_j). So each node costs two short dot products and the sums turn once.
+  // the ring's centre from the centre of mass, so its gap and its normal velocity
+  // v_y + (w x l_j)_y are linear in (x_j, z_j), and the nodes' moment is
+  //   sum F_n,j l_j = (sum F_n,j)(a - r e_y) + R (sum F_n,j x_j, 0, sum F_n,j z_j).
+  // In the arc's frame the pair at +-psi from the lowest point theta_0, (x, z) = R_c (cos theta,
+  // sin theta) with theta = theta_0 +- psi, has the one gap g_c - A cos psi (kernels/rim_contact.h)
+  // and the normal velocities v_a + P cos psi +- Q sin psi, and adds (F_+ + F_-) cos psi and
+  // (F_+ - F_-) sin psi to the sums along and across theta_0. A pair's two nodes differ only in
+  // the sign of Q: shaken in its plane (Q = 0) they push alike and the sum across stays 0 exactly.
   const RimTouch<T> rim = rim_touch(contacts, p, rotation, body.y);
   const Vector3<T> ring_arm = rotation.apply({-p.centre_x, radius - p.centre_y, zero});
   const bool normal_whole = whole_step_terms & kWholeStepNormalDashpot;
@@ -197,17 +202,38 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
                           normal_omega.x * ring_arm.z;
   const T velocity_per_x = normal_omega.z * rotation.r00 - normal_omega.x * rotation.r20;
   const T velocity_per_z = normal_omega.z * rotation.r02 - normal_omega.x * rotation.r22;
-  T rim_normal = zero, rim_shear_stiffness = zero, normal_x = zero, normal_z = zero;  // sum F_n,j (1, x_j, z_j)
-  for_each_rim_node(contacts, p, rim, [&](const T& body_x, const T& body_z, const T& normal_stiffness,
-                                          const T& shear_stiffness) {
-    const T gap = rim.centre_gap + (rotation.r10 * body_x + rotation.r12 * body_z);
-    const T normal_velocity = ring_velocity + (velocity_per_x * body_x + velocity_per_z * body_z);
-    const T normal = normal_force(normal_stiffness, p, gap, normal_velocity);
-    rim_normal = rim_normal + normal;
-    normal_x = normal_x + normal * body_x;
-    normal_z = normal_z + normal * body_z;
-    rim_shear_stiffness = rim_shear_stiffness + select(gap < zero, shear_stiffness, zero);
-  });
+  const T ring = broadcast<T>(contacts.ring_radius);
+  const T c0 = rim.arc.towards_cos, s0 = rim.arc.towards_sin;
+  const T velocity_along = ring * (velocity_per_x * c0 + velocity_per_z * s0);   // P
+  const T velocity_across = ring * (velocity_per_z * c0 - velocity_per_x * s0);  // Q
+  const T ring_normal_stiffness = broadcast<T>(contacts.ring_normal_stiffness) * p.stiffness_scale;
+  const T ring_shear_stiffness = broadcast<T>(contacts.ring_shear_stiffness) * p.stiffness_scale;
+  T rim_normal = zero, rim_shear_stiffness = zero, normal_along = zero, normal_across = zero;
+  auto each_pair = [&](auto&& law) {
+    for (int j = 0; j < kRimNodePairs; ++j) {
+      const RimPair<T> pair = rim_pair(contacts, rim.arc, j);
+      const T gap = rim.centre_gap - rim.amplitude * pair.cos_psi;
+      const T mean_velocity = ring_velocity + velocity_along * pair.cos_psi;
+      const T turn_velocity = velocity_across * pair.sin_psi;
+      const T normal_stiffness = ring_normal_stiffness * pair.share;
+      const T ahead = law(normal_stiffness, gap, mean_velocity + turn_velocity);
+      const T behind = law(normal_stiffness, gap, mean_velocity - turn_velocity);
+      const T both = ahead + behind;
+      rim_normal = rim_normal + both;
+      normal_along = normal_along + both * pair.cos_psi;
+      normal_across = normal_across + (ahead - behind) * pair.sin_psi;
+      const T shear_stiffness = ring_shear_stiffness * pair.share;
+      rim_shear_stiffness = rim_shear_stiffness + select(gap < zero, shear_stiffness + shear_stiffness, zero);
+    }
+  };
+  // The same bits either way (kernels/contact_law.h, linear_floor).
+  if (linear_floor(p)) {
+    each_pair([&](const T& k, const T& gap, const T& v) { return linear_normal_force(k, p.damping_beta, gap, v); });
+  } else {
+    each_pair([&](const T& k, const T& gap, const T& v) { return normal_force(k, p, gap, v); });
+  }
+  const T normal_x = ring * (c0 * normal_along - s0 * normal_across);  // sum F_n,j x_j
+  const T normal_z = ring * (s0 * normal_along + c0 * normal_across);  // sum F_n,j z_j
   const Vector3<T> turned{rotation.r00 * normal_x + rotation.r02 * normal_z, rotation.r10 * normal_x + rotation.r12 * normal_z,
                           rotation.r20 * normal_x + rotation.r22 * normal_z};
   const Vector3<T> pressure_moment{rim_normal * ring_arm.x + turned.x, rim_normal * (ring_arm.y - radius) + turned.y,
@@ -215,13 +241,11 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   const auto rim_touching = rim_shear_stiffness > zero;
   // Where no node pushes, the rim's lowest point stands in for the centre of pressure.
   const auto pushing = rim_normal > zero;
-  const T pushed = select(pushing, rim_normal, broadcast<T>(1.0));
-  const T ring = broadcast<T>(contacts.ring_radius);
-  const Vector3<T> lowest = rotation.apply({ring * rim.arc.towards_cos - p.centre_x, radius - p.centre_y,
-                                            ring * rim.arc.towards_sin});
-  const Vector3<T> rim_lever{select(pushing, pressure_moment.x / pushed, lowest.x),
-                             select(pushing, pressure_moment.y / pushed, lowest.y - radius),
-                             select(pushing, pressure_moment.z / pushed, lowest.z)};
+  const T per_pushed = broadcast<T>(1.0) / select(pushing, rim_normal, broadcast<T>(1.0));
+  const Vector3<T> lowest = rotation.apply({ring * c0 - p.centre_x, radius - p.centre_y, ring * s0});
+  const Vector3<T> rim_lever{select(pushing, pressure_moment.x * per_pushed, lowest.x),
+                             select(pushing, pressure_moment.y * per_pushed, lowest.y - radius),
+                             select(pushing, pressure_moment.z * per_pushed, lowest.z)};
   const SliderVelocities<T> rim_velocity = contact_velocities(rim_lever);
   const Vector3<T> rim_friction =
       shear_contact<Law>(model, p, rim_touching, active, rim_normal, rim_shear_stiffness, rim_velocity, points[0]);
