@@ -46,13 +46,6 @@ struct RimArc {
   T half_width;                // U = tan(phi / 4) in [0, 1]
 };
 
-// One node of the arc: its direction in the body frame and its share of the ring's stiffness.
-template <class T>
-struct RimNode {
-  T cos_theta, sin_theta;
-  T share;  // of K_ring: the node's Gauss weight in theta over 2 pi (the shares of the whole ring sum to 1)
-};
-
 // centre_gap: g_c; slope_x, slope_z: R_c e1_y and R_c e3_y.
 template <class T>
 CASKDEM_HOST_DEVICE inline RimArc<T> touching_arc(const T& centre_gap, const T& slope_x, const T& slope_z) {
@@ -61,12 +54,12 @@ CASKDEM_HOST_DEVICE inline RimArc<T> touching_arc(const T& centre_gap, const T& 
   const T zero = broadcast<T>(0.0), one = broadcast<T>(1.0), half = broadcast<T>(0.5);
   const T amplitude = lane::sqrt(slope_x * slope_x + slope_z * slope_z);
   const auto tilted = amplitude > zero;
-  const T safe = select(tilted, amplitude, one);
+  const T per_amplitude = one / select(tilted, amplitude, one);
   // Upright (A = 0) the ring touches all round or not at all, and any direction serves.
-  const T towards_cos = select(tilted, -slope_x / safe, one);
-  const T towards_sin = select(tilted, -slope_z / safe, zero);
+  const T towards_cos = select(tilted, -slope_x * per_amplitude, one);
+  const T towards_sin = select(tilted, -slope_z * per_amplitude, zero);
   const T all_or_none = select(centre_gap < zero, -one, one);
-  const T cos_phi = select(tilted, lane::clamp(centre_gap / safe, -one, one), all_or_none);
+  const T cos_phi = select(tilted, lane::clamp(centre_gap * per_amplitude, -one, one), all_or_none);
   const T half_width = lane::sqrt((one - cos_phi) * half) / (one + lane::sqrt((one + cos_phi) * half));
   return {towards_cos, towards_sin, half_width};
 }
@@ -79,26 +72,31 @@ struct RimPair {
   T share;
 };
 
+// Every pair at once, with one division for the eight reciprocals 1 / (1 + u_j^2): their product's
+// reciprocal times the other factors (prefix and suffix products; each factor is in [1, 2], so
+// nothing overflows), a few roundings more than eight divisions, at a fraction of their cost.
 template <class T>
-CASKDEM_HOST_DEVICE inline RimPair<T> rim_pair(const Contacts3D& contacts, const RimArc<T>& arc, int pair) {
+CASKDEM_HOST_DEVICE inline void rim_pairs(const Contacts3D& contacts, const RimArc<T>& arc,
+                                          RimPair<T> (&pairs)[kRimNodePairs]) {
   using lane::broadcast;
   const T one = broadcast<T>(1.0), two = broadcast<T>(2.0);
-  const T u = arc.half_width * broadcast<T>(contacts.node_abscissa[pair]);
-  const T inverse = one / (one + u * u);
-  const T cos_w = (one - u * u) * inverse, sin_w = two * u * inverse;
-  // dtheta = 4 U w_j du / (1 + u^2) over [-1, 1] in Gauss's variable; / 2 pi for the share.
-  const T share = broadcast<T>(contacts.node_weight[pair] * 4.0 / (2.0 * 3.14159265358979323846)) * arc.half_width * inverse;
-  return {cos_w * cos_w - sin_w * sin_w, two * sin_w * cos_w, share};
-}
-
-// The node pair of abscissa `pair` (the nodes at +psi and -psi of Gauss node u = U a).
-template <class T>
-CASKDEM_HOST_DEVICE inline void rim_node_pair(const Contacts3D& contacts, const RimArc<T>& arc, int pair,
-                                              RimNode<T>& ahead, RimNode<T>& behind) {
-  const RimPair<T> offset = rim_pair(contacts, arc, pair);
-  const T c0 = arc.towards_cos, s0 = arc.towards_sin, cos_psi = offset.cos_psi, sin_psi = offset.sin_psi;
-  ahead = {c0 * cos_psi - s0 * sin_psi, s0 * cos_psi + c0 * sin_psi, offset.share};
-  behind = {c0 * cos_psi + s0 * sin_psi, s0 * cos_psi - c0 * sin_psi, offset.share};
+  T u[kRimNodePairs], factor[kRimNodePairs], before[kRimNodePairs];
+  T product = one;
+  for (int j = 0; j < kRimNodePairs; ++j) {
+    u[j] = arc.half_width * broadcast<T>(contacts.node_abscissa[j]);
+    factor[j] = one + u[j] * u[j];
+    before[j] = product;  // the factors before j
+    product = product * factor[j];
+  }
+  T after = one / product;  // 1 / (all factors), then times each factor as j falls
+  for (int j = kRimNodePairs - 1; j >= 0; --j) {
+    const T inverse = after * before[j];  // 1 / factor[j]
+    after = after * factor[j];
+    const T cos_w = (one - u[j] * u[j]) * inverse, sin_w = two * u[j] * inverse;
+    const T share =
+        broadcast<T>(contacts.node_weight[j] * 4.0 / (2.0 * 3.14159265358979323846)) * arc.half_width * inverse;
+    pairs[j] = {cos_w * cos_w - sin_w * sin_w, two * sin_w * cos_w, share};
+  }
 }
 
 }  // namespace caskdem::kernels

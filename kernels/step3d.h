@@ -67,7 +67,9 @@ CASKDEM_HOST_DEVICE inline RimTouch<T> rim_touch(const Contacts3D& contacts, con
 }
 
 // The rim's nodes on its touching arc in mirror pairs, each with its body-frame sphere centre
-// (x, r, z) and stiffnesses: visit(x, z, K_n, K_s).
+// (x, r, z) and stiffnesses: visit(x, z, K_n, K_s). The step itself works in the arc's frame
+// (step3d, below) from the same pairs; this is the nodes one by one, for the model's standing
+// stiffness and the tests' energy.
 template <class T, class Visit>
 CASKDEM_HOST_DEVICE inline void for_each_rim_node(const Contacts3D& contacts, const LaneParameters<T>& p,
                                                   const RimTouch<T>& rim, Visit&& visit) {
@@ -75,11 +77,14 @@ CASKDEM_HOST_DEVICE inline void for_each_rim_node(const Contacts3D& contacts, co
   const T ring = broadcast<T>(contacts.ring_radius);
   const T ring_normal = broadcast<T>(contacts.ring_normal_stiffness) * p.stiffness_scale;
   const T ring_shear = broadcast<T>(contacts.ring_shear_stiffness) * p.stiffness_scale;
-  for (int j = 0; j < kRimNodePairs; ++j) {
-    RimNode<T> ahead, behind;
-    rim_node_pair(contacts, rim.arc, j, ahead, behind);
-    visit(ring * ahead.cos_theta, ring * ahead.sin_theta, ring_normal * ahead.share, ring_shear * ahead.share);
-    visit(ring * behind.cos_theta, ring * behind.sin_theta, ring_normal * behind.share, ring_shear * behind.share);
+  RimPair<T> pairs[kRimNodePairs];
+  rim_pairs(contacts, rim.arc, pairs);
+  const T c0 = rim.arc.towards_cos, s0 = rim.arc.towards_sin;
+  for (const RimPair<T>& pair : pairs) {
+    const T ahead_cos = c0 * pair.cos_psi - s0 * pair.sin_psi, ahead_sin = s0 * pair.cos_psi + c0 * pair.sin_psi;
+    const T behind_cos = c0 * pair.cos_psi + s0 * pair.sin_psi, behind_sin = s0 * pair.cos_psi - c0 * pair.sin_psi;
+    visit(ring * ahead_cos, ring * ahead_sin, ring_normal * pair.share, ring_shear * pair.share);
+    visit(ring * behind_cos, ring * behind_sin, ring_normal * pair.share, ring_shear * pair.share);
   }
 }
 
@@ -209,9 +214,10 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   const T ring_normal_stiffness = broadcast<T>(contacts.ring_normal_stiffness) * p.stiffness_scale;
   const T ring_shear_stiffness = broadcast<T>(contacts.ring_shear_stiffness) * p.stiffness_scale;
   T rim_normal = zero, rim_shear_stiffness = zero, normal_along = zero, normal_across = zero;
+  RimPair<T> pairs[kRimNodePairs];
+  rim_pairs(contacts, rim.arc, pairs);
   auto each_pair = [&](auto&& law) {
-    for (int j = 0; j < kRimNodePairs; ++j) {
-      const RimPair<T> pair = rim_pair(contacts, rim.arc, j);
+    for (const RimPair<T>& pair : pairs) {
       const T gap = rim.centre_gap - rim.amplitude * pair.cos_psi;
       const T mean_velocity = ring_velocity + velocity_along * pair.cos_psi;
       const T turn_velocity = velocity_across * pair.sin_psi;
