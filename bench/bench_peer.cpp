@@ -37,53 +37,14 @@
 #include "ensemble/runner.h"
 #include "model/build.h"
 #include "sim/simulate.h"
+#include "bench/peer_cask.h"
 
 namespace caskdem::bench {
 namespace {
 
 const std::vector<double> kPgaG = {0.4, 0.5, 0.6};
-constexpr double kFriction = 0.6;
-const double kSimilarity = std::getenv("PEER_SIMILARITY") ? std::atof(std::getenv("PEER_SIMILARITY")) : 3.0;
+constexpr double kFriction = kPeerFriction;
 constexpr double kTolerance = 0.01;  // max rotation within 1 % of the finest step's
-
-MotionSpec kobe() {
-  MotionSpec record;
-  record.kind = MotionSpec::Kind::record;
-  record.file = std::string(CASKDEM_SHARED_DIR) + "/motions/kobe1995_takatori090.csv";
-  record.read.format = motion::RecordFormat::columns;
-  record.read.unit = motion::AccelerationUnit::g;
-  record.similarity_scale = kSimilarity;
-  return record;
-}
-
-struct Peer {
-  Case cask;
-  std::unique_ptr<motion::TableMotion> motion;  // the compressed record, unscaled
-  double pga = 0.0;                             // m/s^2, of the compressed record
-  double duration = 0.0;                        // s: record + 2 s
-  double half_width = 0.0, height = 0.0, mass = 0.0;
-};
-
-const Peer& peer() {
-  static const Peer p = [] {
-    Peer q;
-    q.cask = load_case(std::string(CASKDEM_SOURCE_DIR) + "/cases/model-1-3-sine.toml");
-    q.cask.model.friction_law = FrictionLaw::constant;
-    q.cask.parameters.friction_static = kFriction;
-    q.cask.parameters.friction_kinetic = kFriction;
-    q.motion = make_motion(kobe());
-    q.pga = motion::peak_acceleration(*q.motion, 1e-3);
-    q.duration = q.motion->duration() + 2.0;
-    const Model model = build_model(q.cask.model, q.cask.parameters);
-    double corner = 0.0;
-    for (int k = 0; k < model.corner_count; ++k) corner = std::max(corner, model.corner_x[k]);
-    q.half_width = corner + model.rounding_radius;
-    q.height = q.cask.cask.cylinder.height;
-    q.mass = q.cask.parameters.mass;
-    return q;
-  }();
-  return p;
-}
 
 // ---- caskdem ---------------------------------------------------------------------------
 double caskdem_max_rotation(double safety_factor, double pga_g) {
@@ -94,65 +55,6 @@ double caskdem_max_rotation(double safety_factor, double pga_g) {
   LaneParameters<double> lane = lane_parameters(model, c.parameters);
   lane.horizontal_scale = units::g_to_si(pga_g) / p.pga;
   return simulate(model, lane, rest_state(model, lane), {p.motion.get(), nullptr}, {p.duration, 0.0}).summary.max_abs_rotation;
-}
-
-// ---- MuJoCo ----------------------------------------------------------------------------
-struct MujocoModel {
-  mjModel* model = nullptr;
-  ~MujocoModel() { mj_deleteModel(model); }
-};
-
-std::unique_ptr<MujocoModel> mujoco_model(double time_step) {
-  const Peer& p = peer();
-  char xml[2048];
-  std::snprintf(xml, sizeof xml,
-                "<mujoco model='cask'>"
-                "<option timestep='%.17g' gravity='0 0 -9.80665'/>"
-                "<worldbody>"
-                "<geom type='plane' size='10 10 0.1' friction='%g 0.005 0.0001'/>"
-                "<body name='cask' pos='0 0 %.17g'>"
-                "<joint name='x' type='slide' axis='1 0 0'/>"
-                "<joint name='z' type='slide' axis='0 0 1'/>"
-                "<joint name='rocking' type='hinge' axis='0 1 0'/>"
-                "<geom type='box' size='%.17g %.17g %.17g' mass='%.17g' friction='%g 0.005 0.0001'/>"
-                "</body></worldbody></mujoco>",
-                time_step, kFriction, 0.5 * p.height, p.half_width, p.half_width, 0.5 * p.height, p.mass, kFriction);
-  const auto path = std::filesystem::temp_directory_path() / "caskdem-peer-cask.xml";
-  std::ofstream(path) << xml;
-  char error[1000] = "";
-  auto m = std::make_unique<MujocoModel>();
-  m->model = mj_loadXML(path.string().c_str(), nullptr, error, sizeof error);
-  std::filesystem::remove(path);
-  if (!m->model) throw std::runtime_error(std::string("MuJoCo: ") + error);
-  return m;
-}
-
-// One realisation: max |rotation| over the run, stopping where caskdem does (tipped over),
-// and the simulated time.
-struct MujocoRun {
-  double max_rotation = 0.0;
-  double simulated = 0.0;  // s
-};
-
-MujocoRun mujoco_run(const mjModel* model, double pga_g) {
-  const Peer& p = peer();
-  mjData* data = mj_makeData(model);
-  mj_forward(model, data);
-  const double scale = units::g_to_si(pga_g) / p.pga;
-  const int body = mj_name2id(model, mjOBJ_BODY, "cask");
-  const int rocking = model->jnt_qposadr[mj_name2id(model, mjOBJ_JOINT, "rocking")];
-  double max_rotation = 0.0;
-  const auto steps = static_cast<long>(std::ceil(p.duration / model->opt.timestep));
-  for (long n = 0; n < steps; ++n) {
-    data->xfrc_applied[6 * body + 0] = -p.mass * scale * p.motion->acceleration(data->time);
-    mj_step(model, data);
-    const double rotation = std::abs(data->qpos[rocking]);
-    max_rotation = std::max(max_rotation, rotation);
-    if (rotation >= 0.5 * std::acos(-1.0)) break;
-  }
-  const MujocoRun run{max_rotation, data->time};
-  mj_deleteData(data);
-  return run;
 }
 
 // ---- convergence: each code's largest step within 1 % of its own finest ----------------
@@ -195,7 +97,7 @@ const Converged& caskdem_converged() {
 const Converged& mujoco_converged() {
   static const Converged c = converge(
       {6.25e-5, 1.25e-4, 2.5e-4, 5e-4, 1e-3, 2e-3, 4e-3},
-      [](double dt, double pga) { return mujoco_run(mujoco_model(dt)->model, pga).max_rotation; }, "MuJoCo dt   ");
+      [](double dt, double pga) { return mujoco_run(mujoco_model(dt, kFriction)->model, units::g_to_si(pga) / peer().pga).max_rotation; }, "MuJoCo dt   ");
   return c;
 }
 
@@ -204,10 +106,10 @@ const Converged& mujoco_converged() {
 void mujoco_speed(benchmark::State& state, double step) {
   const Converged& c = mujoco_converged();
   const double dt = step > 0.0 ? step : c.step;
-  const auto model = mujoco_model(dt);
+  const auto model = mujoco_model(dt, kFriction);
   double simulated = 0.0;
   for (auto _ : state) {
-    for (double pga : kPgaG) simulated += mujoco_run(model->model, pga).simulated;
+    for (double pga : kPgaG) simulated += mujoco_run(model->model, units::g_to_si(pga) / peer().pga).simulated;
   }
   state.counters["time_step_s"] = dt;
   state.counters["realisation_seconds_per_wall_second"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
