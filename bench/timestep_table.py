@@ -25,11 +25,12 @@ def ratio(d, band):
 rows = list(csv.DictReader(open(sys.argv[1])))
 by = defaultdict(list)
 for r in rows:
-    by[(r["ensemble"], float(r["safety_factor"]), float(r["stiffness_scale"]), r.get("slider") or "half-step")].append(r)
+    by[(r["ensemble"], float(r["safety_factor"]), float(r["stiffness_scale"]), r.get("slider") or "half-step",
+        r.get("realisations") or "")].append(r)
 
 print("| ensemble | f_s | step | wall | worst of median, beta, annual frequency (x band/4) | which | worst stripe (x CP/4) | curves not fitted | acceptable |")
 print("|---|---|---|---|---|---|---|---|---|")
-for (ensemble, fs, k, slider), group in by.items():
+for (ensemble, fs, k, slider, size), group in by.items():
     worst, which, stripe, unfitted = 0.0, "", 0.0, []
     for r in group:
         if float(r["d_median_rel"]) != float(r["d_median_rel"]):
@@ -48,5 +49,7 @@ for (ensemble, fs, k, slider), group in by.items():
     label = ensemble if k == 1.0 else f"{ensemble}, stiffness x{k:g}"
     if slider != "half-step":
         label += f", {slider} slider"
+    if size and ensemble.startswith("benchmark") and int(size) > 10000:
+        label += f", {int(size):,} realisations"
     print(f"| {label} | {fs:g} | {float(group[0]['time_step_s']):.3g} s | {float(group[0]['wall_s']):.1f} s "
           f"| {worst:.2f} | {which if not reference else '-'} | {stripe:.2f} | {', '.join(unfitted) or '-'} | {verdict} |")

@@ -90,7 +90,8 @@ CASKDEM_HOST_DEVICE inline T linear_normal_force(const T& normal_stiffness, cons
 
 template <FrictionLaw Law, class T>
 CASKDEM_HOST_DEVICE inline CornerContact<T> corner_contact(const Model& model, const LaneParameters<T>& lane_parameters,
-                                                           int corner, const T& gap, const SliderVelocities<T>& velocity,
+                                                           int corner, const T& gap,
+                                                           const SliderVelocities<T>& velocity,
                                                            const CornerState<T>& previous) {
   using lane::broadcast;
   using lane::select;
@@ -107,9 +108,8 @@ CASKDEM_HOST_DEVICE inline CornerContact<T> corner_contact(const Model& model, c
   const T sticking_dashpot = -beta * shear_stiffness * velocity.shear_dashpot_x;
   const T sticking = trial + sticking_dashpot;
   const T limit =
-      friction_limit<Law>(model, lane_parameters, lane::abs(velocity.friction_x), was_slipping, normal, [&](const T& floor) {
-        return lane::abs(trial) <= floor && lane::abs(sticking) <= floor;
-      });
+      friction_limit<Law>(model, lane_parameters, lane::abs(velocity.friction_x), was_slipping, normal,
+                          [&](const T& floor) { return lane::abs(trial) <= floor && lane::abs(sticking) <= floor; });
   const auto slipping = touching && (lane::abs(trial) > limit);
   // Both branches computed, blended per lane: slip caps the spring at mu F_n, stick keeps
   // the trial force, an open contact resets it.

@@ -92,7 +92,8 @@ template <class T>
 CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE SinCos<T> sin_cos_of_turn(const T& a) {
   using lane::broadcast;
   const T z = a * a;
-  const SinCos<T> small{a + (a * z) * estrin(z, turn_sine_tail()), broadcast<T>(1.0) + z * estrin(z, turn_cosine_tail())};
+  const SinCos<T> small{a + (a * z) * estrin(z, turn_sine_tail()),
+                        broadcast<T>(1.0) + z * estrin(z, turn_cosine_tail())};
   const auto is_small = lane::abs(a) < broadcast<T>(kSmallTurn);
   if (lane::all(is_small)) return small;
   const SinCos<T> any = sin_cos(a);

@@ -14,8 +14,9 @@
 //   v(n+1/2) = v(n-1/2) + a(n) dt,   x(n+1) = x(n) + v(n+1/2) dt,
 // with contact forces from positions at t_n and shear-spring increments from velocities at
 // t_{n-1/2}; the dashpots and the friction law read the velocity at t_{n-1/2} (the source paper's
-// scheme) or extrapolated to t_n (Model::whole_step_terms; kernels/slider.h). The step observes the state at t_n (running maxima, impacts, end
-// criteria) before advancing it; a lane that has stopped keeps its state.
+// scheme) or extrapolated to t_n (Model::whole_step_terms; kernels/slider.h). The step observes
+// the state at t_n (running maxima, impacts, end criteria) before advancing it; a lane that has
+// stopped keeps its state.
 
 #include "kernels/contact_law.h"
 #include "kernels/end_criteria.h"

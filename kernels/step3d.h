@@ -7,11 +7,11 @@
 //   m x'' = sum F - m (a_x(t), g + a_y(t), a_z(t))       a_y the vertical component
 //   L'    = sum l_k x F_k                               L = R pi, about the centre of mass
 // Time stepping as in 2D (central differences: forces from positions at t_n and velocities at
-// t_{n-1/2}, or at t_n for the whole-step slider's terms, kernels/slider.h; the angular
-// momentum extrapolated in the body frame as the velocity is): v(n+1/2) = v(n-1/2) + a(n) dt, x(n+1) = x(n) + v(n+1/2) dt; for the rotation
-// the torque kicks the angular momentum, pi <- pi + dt R(n)^T tau(n), and the free rotation
-// over dt (kernels/rigid_rotation.h, Dullweber-Leimkuhler-McLachlan) turns the body and pi
-// together; with no torque that is the exact-to-O(dt^3) symplectic flow of a symmetric top.
+// t_{n-1/2}, or at t_n for the whole-step slider's terms, kernels/slider.h, the angular momentum
+// extrapolated in the body frame as the velocity is): v(n+1/2) = v(n-1/2) + a(n) dt,
+// x(n+1) = x(n) + v(n+1/2) dt; for the rotation the torque kicks the angular momentum,
+// pi <- pi + dt R(n)^T tau(n), and the free rotation over dt turns the body and pi together, the
+// torque-free symmetric top's exact flow (kernels/rigid_rotation.h).
 //
 // Each contact point is a sphere of radius r at a body point c_k, a node of the rim's touching
 // arc or the base's centre (kernels/model3d.h, kernels/rim_contact.h): its gap
@@ -99,16 +99,18 @@ CASKDEM_HOST_DEVICE inline void for_each_rim_node(const Contacts3D& contacts, co
 // Always inlined, as rotate_about_body_axis is: a call spills every live SIMD register.
 template <FrictionLaw Law, class T, class Mask>
 CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p,
-                                                    const Mask& touching, const Mask& active, const T& normal,
-                                                    const T& shear_stiffness, const SliderVelocities<T>& velocity,
-                                                    ContactState3D<T>& state) {
+                                                                   const Mask& touching, const Mask& active,
+                                                                   const T& normal, const T& shear_stiffness,
+                                                                   const SliderVelocities<T>& velocity,
+                                                                   ContactState3D<T>& state) {
   using lane::broadcast;
   using lane::select;
   const T zero = broadcast<T>(0.0), one = broadcast<T>(1.0);
   const T dt = broadcast<T>(model.time_step);
   const T& slip_x = velocity.spring.slip_x;
   const T& slip_z = velocity.spring.slip_z;
-  const T slip_speed = lane::sqrt(velocity.friction_x * velocity.friction_x + velocity.friction_z * velocity.friction_z);
+  const T slip_speed =
+      lane::sqrt(velocity.friction_x * velocity.friction_x + velocity.friction_z * velocity.friction_z);
   const auto was_slipping = state.slipping > broadcast<T>(0.5);
   // Where it touched before (K_s(previous) > 0), the share of the springs still touching.
   const auto had = state.stiffness > zero;
@@ -167,10 +169,11 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   const std::int32_t whole_step_terms = model.whole_step_terms;
   const Vector3<T> velocity_n{at_whole_step(body.vx, body.kick_vx), at_whole_step(body.vy, body.kick_vy),
                               at_whole_step(body.vz, body.kick_vz)};
-  const Vector3<T> omega_n = whole_step_terms ? rotation.apply({at_whole_step(body.pi_x, body.kick_pi_x) * p.inverse_inertia,
-                                                                at_whole_step(body.pi_y, body.kick_pi_y) * p.inverse_axial_inertia,
-                                                                at_whole_step(body.pi_z, body.kick_pi_z) * p.inverse_inertia})
-                                              : omega;
+  const Vector3<T> omega_n = whole_step_terms
+                                 ? rotation.apply({at_whole_step(body.pi_x, body.kick_pi_x) * p.inverse_inertia,
+                                                   at_whole_step(body.pi_y, body.kick_pi_y) * p.inverse_axial_inertia,
+                                                   at_whole_step(body.pi_z, body.kick_pi_z) * p.inverse_inertia})
+                                 : omega;
   // A contact point's velocity from its lever arm, at the half step and at the whole step.
   auto contact_velocities = [&](const Vector3<T>& lever) {
     const Vector3<T> spin = cross(omega, lever);
@@ -203,8 +206,8 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   const Vector3<T> ring_arm = rotation.apply({-p.centre_x, radius - p.centre_y, zero});
   const bool normal_whole = whole_step_terms & kWholeStepNormalDashpot;
   const Vector3<T>& normal_omega = normal_whole ? omega_n : omega;  // the normal dashpot's (kernels/slider.h)
-  const T ring_velocity = (normal_whole ? velocity_n.y : velocity.y) + normal_omega.z * ring_arm.x -
-                          normal_omega.x * ring_arm.z;
+  const T ring_velocity =
+      (normal_whole ? velocity_n.y : velocity.y) + normal_omega.z * ring_arm.x - normal_omega.x * ring_arm.z;
   const T velocity_per_x = normal_omega.z * rotation.r00 - normal_omega.x * rotation.r20;
   const T velocity_per_z = normal_omega.z * rotation.r02 - normal_omega.x * rotation.r22;
   const T ring = broadcast<T>(contacts.ring_radius);
@@ -240,7 +243,8 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   }
   const T normal_x = ring * (c0 * normal_along - s0 * normal_across);  // sum F_n,j x_j
   const T normal_z = ring * (s0 * normal_along + c0 * normal_across);  // sum F_n,j z_j
-  const Vector3<T> turned{rotation.r00 * normal_x + rotation.r02 * normal_z, rotation.r10 * normal_x + rotation.r12 * normal_z,
+  const Vector3<T> turned{rotation.r00 * normal_x + rotation.r02 * normal_z,
+                          rotation.r10 * normal_x + rotation.r12 * normal_z,
                           rotation.r20 * normal_x + rotation.r22 * normal_z};
   const Vector3<T> pressure_moment{rim_normal * ring_arm.x + turned.x, rim_normal * (ring_arm.y - radius) + turned.y,
                                    rim_normal * ring_arm.z + turned.z};  // sum F_n,j l_j

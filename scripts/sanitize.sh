@@ -27,6 +27,7 @@ repeats=$(
     'Cask3D\.AnEccentricCentreOfMassRocksFirstTowardsItsSide'
     'Cask3DLanes\.BlocksGiveTheDeterministicRunsBitsOnEveryInstructionSet'
     'Ensemble3D\.EveryLaneEqualsTheDeterministicRun'
+    'Ensemble3D\.WholeStepSliderSameBitsOnEveryInstructionSet'
     'Reproducibility\.RefilledLanesGiveTheLockstepBits'
     'ReproducibilityDistributed\.SameBitsOnEveryInstructionSet'
     'Resume\.Killed3DRunResumesToTheUninterruptedResult'

@@ -1,4 +1,3 @@
-#include "model/build.h"
 #include "casefile/case_file.h"
 
 #include <cctype>
@@ -9,6 +8,7 @@
 
 #include "core/error.h"
 #include "core/text.h"
+#include "model/build.h"
 
 namespace caskdem {
 
@@ -227,7 +227,8 @@ void read_integration(TableReader& root, Case& c) {
   c.model.safety_factor = t.in_range("safety_factor", t.quantity_or("safety_factor", Dimension::dimensionless, 0.01), 1e-6, 1.0);
   c.model.contact_stiffness_scale = t.in_range(
       "contact_stiffness_scale", t.quantity_or("contact_stiffness_scale", Dimension::dimensionless, 1.0), 1e-4, 1.0);
-  c.model.whole_step_terms = whole_step_terms_of(t.choice("slider", slider_names(), slider_name_of(c.model.whole_step_terms)));
+  c.model.whole_step_terms =
+      whole_step_terms_of(t.choice("slider", slider_names(), slider_name_of(c.model.whole_step_terms)));
   c.duration = t.in_range("duration", t.quantity_or("duration", Dimension::time, 0.0), 0.0, kLongestDuration);
   c.settle_time = t.in_range("settle_time", t.quantity_or("settle_time", Dimension::time, 2.0), 0.0, kLongestDuration);
   c.settle_time_given = t.has("settle_time");
@@ -444,8 +445,9 @@ const std::vector<std::string>& motion_keys() {
 
 const KeySchema& shared_case_keys() {
   static const KeySchema schema = {
-      {"cask", {"shape", "dimensions", "rounding", "mass", "density", "inertia", "diameter", "height", "half_width", "footprint",
-                "footprint_points", "eccentricity", "axial_inertia", "vertices", "depth", "centre_of_mass"}},
+      {"cask",
+       {"shape", "dimensions", "rounding", "mass", "density", "inertia", "diameter", "height", "half_width",
+        "footprint", "footprint_points", "eccentricity", "axial_inertia", "vertices", "depth", "centre_of_mass"}},
       {"contact", {"normal_stiffness", "shear_stiffness", "barkan"}},
       {"contact.barkan", {"shear_modulus", "poisson_ratio", "beta_z", "beta_x"}},
       {"friction", {"law", "coefficient", "static", "kinetic", "decay_speed", "table", "table_file"}},

@@ -7,7 +7,6 @@
 #include <iomanip>
 #include <iostream>
 
-#include "model/build.h"
 #include "commands/commands.h"
 #include "commands/validators.h"
 #include "core/error.h"
@@ -25,6 +24,7 @@ class MpiSession;  // ensembles run in one process without MPI
 #include "io/hdf5_file.h"
 #include "io/output_paths.h"
 #include "io/run_output.h"
+#include "model/build.h"
 
 namespace caskdem::commands {
 

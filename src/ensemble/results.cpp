@@ -1,4 +1,3 @@
-#include "model/build.h"
 #include "ensemble/results.h"
 
 #include <cmath>
@@ -8,6 +7,7 @@
 #include "ensemble/analysis.h"
 #include "ensemble/limit_state_file.h"
 #include "io/hdf5_file.h"
+#include "model/build.h"
 
 namespace caskdem {
 

@@ -1,4 +1,3 @@
-#include "model/build.h"
 #include "io/run_output.h"
 
 #include <spawn.h>
@@ -18,6 +17,7 @@
 #include "caskdem/build_info.h"
 #include "core/units.h"
 #include "io/hdf5_file.h"
+#include "model/build.h"
 
 namespace caskdem {
 

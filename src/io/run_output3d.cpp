@@ -1,4 +1,3 @@
-#include "model/build.h"
 #include "io/run_output3d.h"
 
 #include <cmath>
@@ -12,6 +11,7 @@
 #include "core/units.h"
 #include "io/hdf5_file.h"
 #include "io/run_output.h"
+#include "model/build.h"
 
 namespace caskdem {
 

@@ -230,8 +230,8 @@ void expect_the_law_2d(int table) {
       lanes[l] = &all[i + l];
       // One lane alone.
       const Situation& s = *lanes[l];
-      const CornerContact<double> got =
-          corner_contact<Law>(m, s.p, 0, s.gap, half_step(s.normal_velocity, s.slip_velocity), {s.shear_spring, s.slipping});
+      const CornerContact<double> got = corner_contact<Law>(
+          m, s.p, 0, s.gap, half_step(s.normal_velocity, s.slip_velocity), {s.shear_spring, s.slipping});
       const CornerContact<double> want = law_2d<Law>(m, s);
       ASSERT_TRUE(same_bits(got.normal_force, want.normal_force));
       ASSERT_TRUE(same_bits(got.shear_force, want.shear_force)) << got.shear_force << " vs " << want.shear_force;
@@ -283,8 +283,9 @@ void expect_the_law_3d(int table) {
       const Situation& s = *lanes[l];
       const double normal = normal_force(m.corner_normal_stiffness[0], s.p, s.gap, s.normal_velocity);
       ContactState3D<double> got_state = state_3d(s), want_state = state_3d(s);
-      const Vector3<double> got = shear_contact<Law>(m, s.p, s.gap < 0.0, true, normal, m.corner_shear_stiffness[0],
-                                                     half_step(s.normal_velocity, s.slip_velocity, s.slip_z), got_state);
+      const Vector3<double> got =
+          shear_contact<Law>(m, s.p, s.gap < 0.0, true, normal, m.corner_shear_stiffness[0],
+                             half_step(s.normal_velocity, s.slip_velocity, s.slip_z), got_state);
       const Vector3<double> want = law_3d<Law>(m, s, want_state);
       ASSERT_TRUE(same_bits(got.x, want.x)) << got.x << " vs " << want.x;
       ASSERT_TRUE(same_bits(got.z, want.z));

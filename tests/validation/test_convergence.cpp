@@ -64,24 +64,24 @@ RunSummary3D summary3d(Case c, double safety_factor) {
 
 TEST(Convergence, TheCaskIn3DUnderAStationsThreeComponents) {
   for (std::int32_t slider : testing::kBothSliders) {
-  Case c = load_case(testing::case_path("model-1-3-kobe-3d.toml"));
-  c.duration = 30.0;
-  c.model.whole_step_terms = slider;
-  const std::string name = slider_name_of(slider);
-  const RunSummary3D fine = summary3d(c, 0.005);
-  const RunSummary3D coarse = summary3d(c, 0.01);
-  const double change = coarse.max_tilt / fine.max_tilt - 1.0;
-  EXPECT_EQ(fine.status, LaneStatus::running);
-  EXPECT_GT(fine.max_tilt_ratio, 0.05) << "it rocked";
-  EXPECT_LT(std::abs(change), 0.005) << name << ": f_s 0.01 gives " << coarse.max_tilt << " rad, 0.005 gives "
-                                     << fine.max_tilt;
-  RecordProperty(name + " change_0.01_vs_0.005", std::to_string(change));
-  for (double f : {0.01, 0.02, 0.05, 0.1}) {
-    const RunSummary3D s = f == 0.01 ? coarse : summary3d(c, f);
-    std::printf("%s: f_s %.3f max tilt %.6f rad (%+.3f %% from f_s 0.005), max slide %.5f m (%+.2f %%)\n",
-                name.c_str(), f, s.max_tilt, 100.0 * (s.max_tilt / fine.max_tilt - 1.0), s.max_slide,
-                100.0 * (s.max_slide / fine.max_slide - 1.0));
-  }
+    Case c = load_case(testing::case_path("model-1-3-kobe-3d.toml"));
+    c.duration = 30.0;
+    c.model.whole_step_terms = slider;
+    const std::string name = slider_name_of(slider);
+    const RunSummary3D fine = summary3d(c, 0.005);
+    const RunSummary3D coarse = summary3d(c, 0.01);
+    const double change = coarse.max_tilt / fine.max_tilt - 1.0;
+    EXPECT_EQ(fine.status, LaneStatus::running);
+    EXPECT_GT(fine.max_tilt_ratio, 0.05) << "it rocked";
+    EXPECT_LT(std::abs(change), 0.005) << name << ": f_s 0.01 gives " << coarse.max_tilt << " rad, 0.005 gives "
+                                       << fine.max_tilt;
+    RecordProperty(name + " change_0.01_vs_0.005", std::to_string(change));
+    for (double f : {0.01, 0.02, 0.05, 0.1}) {
+      const RunSummary3D s = f == 0.01 ? coarse : summary3d(c, f);
+      std::printf("%s: f_s %.3f max tilt %.6f rad (%+.3f %% from f_s 0.005), max slide %.5f m (%+.2f %%)\n",
+                  name.c_str(), f, s.max_tilt, 100.0 * (s.max_tilt / fine.max_tilt - 1.0), s.max_slide,
+                  100.0 * (s.max_slide / fine.max_slide - 1.0));
+    }
   }
 }
 

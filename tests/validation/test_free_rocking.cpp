@@ -69,44 +69,44 @@ FreeRocking release(const Case& c, double tilt_ratio, double duration) {
 
 TEST(FreeRocking, QuarterPeriodFollowsHousner) {
   for (std::int32_t slider : testing::kBothSliders) {
-  Case c = stiff_lightly_damped();
-  c.model.whole_step_terms = slider;
-  const testing::Prepared p = testing::prepare(c);
-  const theory::RigidBlock block = rigid_equivalent(p.model, c.parameters);
-  const std::string name = slider_name_of(slider);
-  for (double ratio : {0.3, 0.5, 0.7, 0.9}) {
-    const double expected = theory::free_rocking_period_linearised(block, ratio * block.slenderness());
-    const FreeRocking r = release(c, ratio, 0.5 * expected);
-    ASSERT_GT(r.first_impact_time, 0.0) << "no impact for theta0/alpha = " << ratio;
-    const double measured = 4.0 * r.first_impact_time;
-    const double error = measured / expected - 1.0;
-    RecordProperty(name + " period_error_" + std::to_string(ratio), std::to_string(error));
-    EXPECT_LT(std::abs(error), 0.03) << name << ", theta0/alpha = " << ratio << ": DEM " << measured << " s, Housner "
-                                     << expected << " s";
-  }
+    Case c = stiff_lightly_damped();
+    c.model.whole_step_terms = slider;
+    const testing::Prepared p = testing::prepare(c);
+    const theory::RigidBlock block = rigid_equivalent(p.model, c.parameters);
+    const std::string name = slider_name_of(slider);
+    for (double ratio : {0.3, 0.5, 0.7, 0.9}) {
+      const double expected = theory::free_rocking_period_linearised(block, ratio * block.slenderness());
+      const FreeRocking r = release(c, ratio, 0.5 * expected);
+      ASSERT_GT(r.first_impact_time, 0.0) << "no impact for theta0/alpha = " << ratio;
+      const double measured = 4.0 * r.first_impact_time;
+      const double error = measured / expected - 1.0;
+      RecordProperty(name + " period_error_" + std::to_string(ratio), std::to_string(error));
+      EXPECT_LT(std::abs(error), 0.03) << name << ", theta0/alpha = " << ratio << ": DEM " << measured << " s, Housner "
+                                       << expected << " s";
+    }
   }
 }
 
 TEST(FreeRocking, AmplitudeDecayFollowsTheExactRelationForItsOwnRestitution) {
   for (std::int32_t slider : testing::kBothSliders) {
-  Case c = stiff_lightly_damped();
-  c.model.whole_step_terms = slider;
-  const std::string name = slider_name_of(slider);
-  const testing::Prepared p = testing::prepare(c);
-  const theory::RigidBlock block = rigid_equivalent(p.model, c.parameters);
-  const FreeRocking r = release(c, 0.7, 8.0);
-  ASSERT_GE(r.peaks.size(), 5u);
-  ASSERT_GE(r.amplitudes.size(), 5u);
-  double worst = 0.0;
-  for (std::size_t n = 0; n + 1 < 5; ++n) {
-    const double restitution = r.peaks[n + 1] / r.peaks[n];  // this impact's own coefficient
-    const double predicted = theory::amplitude_after_impact(block, restitution, r.amplitudes[n]);
-    const double error = r.amplitudes[n + 1] / predicted - 1.0;
-    worst = std::max(worst, std::abs(error));
-    EXPECT_LT(std::abs(error), 0.02) << name << ", impact " << n + 1 << ": amplitude " << r.amplitudes[n + 1]
-                                     << " rad, predicted " << predicted << " rad";
-  }
-  RecordProperty(name + " worst_amplitude_error", std::to_string(worst));
+    Case c = stiff_lightly_damped();
+    c.model.whole_step_terms = slider;
+    const std::string name = slider_name_of(slider);
+    const testing::Prepared p = testing::prepare(c);
+    const theory::RigidBlock block = rigid_equivalent(p.model, c.parameters);
+    const FreeRocking r = release(c, 0.7, 8.0);
+    ASSERT_GE(r.peaks.size(), 5u);
+    ASSERT_GE(r.amplitudes.size(), 5u);
+    double worst = 0.0;
+    for (std::size_t n = 0; n + 1 < 5; ++n) {
+      const double restitution = r.peaks[n + 1] / r.peaks[n];  // this impact's own coefficient
+      const double predicted = theory::amplitude_after_impact(block, restitution, r.amplitudes[n]);
+      const double error = r.amplitudes[n + 1] / predicted - 1.0;
+      worst = std::max(worst, std::abs(error));
+      EXPECT_LT(std::abs(error), 0.02) << name << ", impact " << n + 1 << ": amplitude " << r.amplitudes[n + 1]
+                                       << " rad, predicted " << predicted << " rad";
+    }
+    RecordProperty(name + " worst_amplitude_error", std::to_string(worst));
   }
 }
 

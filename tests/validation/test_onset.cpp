@@ -36,46 +36,47 @@ Onset ramp_until(const Case& c, double duration, Predicate happened) {
 
 TEST(Onset, RockingStartsAtGTanAlpha) {
   for (std::int32_t slider : testing::kBothSliders) {
-  Case c = testing::one_third_model();
-  c.model.whole_step_terms = slider;
-  c.model.friction_law = FrictionLaw::constant;
-  c.parameters.friction_static = c.parameters.friction_kinetic = 2.0;  // friction holds
-  const testing::Prepared p = testing::prepare(c);
-  const double expected = p.model.gravity * std::tan(p.model.stability_angle);
-  // Uplift: the heel corner's normal force falls to zero.
-  const Onset onset = ramp_until(c, 1.3 * expected / kRampRate, [](const TimeHistory& h, std::size_t i) {
-    return h.normal_force[0][i] == 0.0 || h.normal_force[1][i] == 0.0;
-  });
-  ASSERT_TRUE(onset.found);
-  const double error = onset.acceleration / expected - 1.0;
-  RecordProperty(slider_name_of(slider) + " relative_error", std::to_string(error));
-  EXPECT_LT(std::abs(error), 0.02) << slider_name_of(slider) << ": uplift at " << onset.acceleration
-                                   << " m/s^2, g tan(alpha) = " << expected;
+    Case c = testing::one_third_model();
+    c.model.whole_step_terms = slider;
+    c.model.friction_law = FrictionLaw::constant;
+    c.parameters.friction_static = c.parameters.friction_kinetic = 2.0;  // friction holds
+    const testing::Prepared p = testing::prepare(c);
+    const double expected = p.model.gravity * std::tan(p.model.stability_angle);
+    // Uplift: the heel corner's normal force falls to zero.
+    const Onset onset = ramp_until(c, 1.3 * expected / kRampRate, [](const TimeHistory& h, std::size_t i) {
+      return h.normal_force[0][i] == 0.0 || h.normal_force[1][i] == 0.0;
+    });
+    ASSERT_TRUE(onset.found);
+    const double error = onset.acceleration / expected - 1.0;
+    RecordProperty(slider_name_of(slider) + " relative_error", std::to_string(error));
+    EXPECT_LT(std::abs(error), 0.02) << slider_name_of(slider) << ": uplift at " << onset.acceleration
+                                     << " m/s^2, g tan(alpha) = " << expected;
   }
 }
 
 TEST(Onset, SlidingStartsAtMuGWhenMuBelowTanAlpha) {
   Case c = testing::one_third_model();
   for (std::int32_t slider : testing::kBothSliders)
-  for (double mu : {0.10, 0.15}) {
-    c.model.whole_step_terms = slider;
-    c.model.friction_law = FrictionLaw::constant;
-    c.parameters.friction_static = c.parameters.friction_kinetic = mu;
-    const testing::Prepared p = testing::prepare(c);
-    ASSERT_LT(mu, std::tan(p.model.stability_angle));
-    const double expected = mu * p.model.gravity;
-    // Sliding: every corner's shear force has reached its Coulomb limit.
-    const Onset onset = ramp_until(c, 1.5 * expected / kRampRate, [mu](const TimeHistory& h, std::size_t i) {
-      for (std::size_t k = 0; k < h.normal_force.size(); ++k) {
-        if (std::abs(h.shear_force[k][i]) < mu * h.normal_force[k][i] * (1.0 - 1e-12)) return false;
-      }
-      return true;
-    });
-    ASSERT_TRUE(onset.found) << "mu = " << mu;
-    const double error = onset.acceleration / expected - 1.0;
-    RecordProperty(slider_name_of(slider) + " relative_error_mu_" + std::to_string(mu), std::to_string(error));
-    EXPECT_LT(std::abs(error), 0.02) << slider_name_of(slider) << ", mu = " << mu << ": sliding at " << onset.acceleration << " m/s^2";
-  }
+    for (double mu : {0.10, 0.15}) {
+      c.model.whole_step_terms = slider;
+      c.model.friction_law = FrictionLaw::constant;
+      c.parameters.friction_static = c.parameters.friction_kinetic = mu;
+      const testing::Prepared p = testing::prepare(c);
+      ASSERT_LT(mu, std::tan(p.model.stability_angle));
+      const double expected = mu * p.model.gravity;
+      // Sliding: every corner's shear force has reached its Coulomb limit.
+      const Onset onset = ramp_until(c, 1.5 * expected / kRampRate, [mu](const TimeHistory& h, std::size_t i) {
+        for (std::size_t k = 0; k < h.normal_force.size(); ++k) {
+          if (std::abs(h.shear_force[k][i]) < mu * h.normal_force[k][i] * (1.0 - 1e-12)) return false;
+        }
+        return true;
+      });
+      ASSERT_TRUE(onset.found) << "mu = " << mu;
+      const double error = onset.acceleration / expected - 1.0;
+      RecordProperty(slider_name_of(slider) + " relative_error_mu_" + std::to_string(mu), std::to_string(error));
+      EXPECT_LT(std::abs(error), 0.02) << slider_name_of(slider) << ", mu = " << mu << ": sliding at "
+                                       << onset.acceleration << " m/s^2";
+    }
 }
 
 }  // namespace

@@ -31,51 +31,52 @@ Case wide_block() {
 
 TEST(Sliding, WideBlockFollowsRigidPlasticTwoWaySliding) {
   for (std::int32_t slider : testing::kBothSliders) {
-  Case c = wide_block();
-  c.model.whole_step_terms = slider;
-  const std::string name = slider_name_of(slider);
-  c.model.friction_law = FrictionLaw::constant;
-  const double mu = 0.2;
-  c.parameters.friction_static = c.parameters.friction_kinetic = mu;
-  const testing::Prepared p = testing::prepare(c);
+    Case c = wide_block();
+    c.model.whole_step_terms = slider;
+    const std::string name = slider_name_of(slider);
+    c.model.friction_law = FrictionLaw::constant;
+    const double mu = 0.2;
+    c.parameters.friction_static = c.parameters.friction_kinetic = mu;
+    const testing::Prepared p = testing::prepare(c);
 
-  const double g = p.model.gravity;
-  for (double amplitude_g : {0.3, 0.6}) {
-    const double amplitude = amplitude_g * g;
-    const double omega = 2.0 * std::numbers::pi * 2.0;
-    const double duration = 4.0;
-    testing::FunctionMotion table([=](double t) { return amplitude * std::sin(omega * t); }, duration);
-    const RunResult run = simulate(p.model, p.lane, rest_state(p.model, p.lane), {&table, nullptr}, {duration, 1e-3});
-    const double exact_interval = 1e-5;
-    const theory::SlidingResponse exact = theory::sliding_under_harmonic(mu, g, amplitude, omega, duration, exact_interval);
+    const double g = p.model.gravity;
+    for (double amplitude_g : {0.3, 0.6}) {
+      const double amplitude = amplitude_g * g;
+      const double omega = 2.0 * std::numbers::pi * 2.0;
+      const double duration = 4.0;
+      testing::FunctionMotion table([=](double t) { return amplitude * std::sin(omega * t); }, duration);
+      const RunResult run = simulate(p.model, p.lane, rest_state(p.model, p.lane), {&table, nullptr}, {duration, 1e-3});
+      const double exact_interval = 1e-5;
+      const theory::SlidingResponse exact =
+          theory::sliding_under_harmonic(mu, g, amplitude, omega, duration, exact_interval);
 
-    const double max_error = run.summary.max_abs_slide / exact.max_abs_displacement - 1.0;
-    double worst_history = 0.0;
-    for (std::size_t i = 0; i < run.history.time.size(); ++i) {
-      // The exact solution, linearly interpolated at the DEM's sample time.
-      const double t = run.history.time[i];
-      const std::size_t j = std::min(static_cast<std::size_t>(t / exact_interval), exact.time.size() - 2);
-      const double w = (t - exact.time[j]) / (exact.time[j + 1] - exact.time[j]);
-      const double u = (1.0 - w) * exact.displacement[j] + w * exact.displacement[j + 1];
-      worst_history = std::max(worst_history, std::abs(run.history.slide[i] - u));
+      const double max_error = run.summary.max_abs_slide / exact.max_abs_displacement - 1.0;
+      double worst_history = 0.0;
+      for (std::size_t i = 0; i < run.history.time.size(); ++i) {
+        // The exact solution, linearly interpolated at the DEM's sample time.
+        const double t = run.history.time[i];
+        const std::size_t j = std::min(static_cast<std::size_t>(t / exact_interval), exact.time.size() - 2);
+        const double w = (t - exact.time[j]) / (exact.time[j + 1] - exact.time[j]);
+        const double u = (1.0 - w) * exact.displacement[j] + w * exact.displacement[j + 1];
+        worst_history = std::max(worst_history, std::abs(run.history.slide[i] - u));
+      }
+      const double history_error = worst_history / exact.max_abs_displacement;
+      RecordProperty(name + " max_slide_error_" + std::to_string(amplitude_g), std::to_string(max_error));
+      RecordProperty(name + " history_error_" + std::to_string(amplitude_g), std::to_string(history_error));
+      EXPECT_LT(std::abs(max_error), 0.02) << name << ", " << amplitude_g << " g: DEM " << run.summary.max_abs_slide
+                                           << " m, exact " << exact.max_abs_displacement << " m";
+      EXPECT_LT(history_error, 0.02) << name << ", " << amplitude_g << " g";
+      EXPECT_LT(run.summary.max_abs_rotation, 1e-3);  // it slid, it did not rock
     }
-    const double history_error = worst_history / exact.max_abs_displacement;
-    RecordProperty(name + " max_slide_error_" + std::to_string(amplitude_g), std::to_string(max_error));
-    RecordProperty(name + " history_error_" + std::to_string(amplitude_g), std::to_string(history_error));
-    EXPECT_LT(std::abs(max_error), 0.02) << name << ", " << amplitude_g << " g: DEM " << run.summary.max_abs_slide
-                                          << " m, exact " << exact.max_abs_displacement << " m";
-    EXPECT_LT(history_error, 0.02) << name << ", " << amplitude_g << " g";
-    EXPECT_LT(run.summary.max_abs_rotation, 1e-3);  // it slid, it did not rock
-  }
   }
 }
 
 // The max slide under two sines (0.6 g at 2 Hz and 0.18 g at 5.4 Hz, so stick and slip
-// alternate irregularly) at f_s = 0.0025 .. 0.04, halving, with the source paper's half-step slider. A convergence study: the change from
-// the finest step must shrink at least in proportion to the step (first order or better), down to
-// the contact's chatter (3e-6 of the slide), and be small over the whole range. The observed order
-// is recorded: it is first (0.85 to 1.1), the dashpots and the friction coefficient being read at
-// the half step (docs/time-step.md, "Where the step's bias comes from").
+// alternate irregularly) at f_s = 0.0025 .. 0.04, halving, with the source paper's half-step slider. A convergence
+// study: the change from the finest step must shrink at least in proportion to the step (first order or better), down
+// to the contact's chatter (3e-6 of the slide), and be small over the whole range. The observed order is recorded: it
+// is first (0.85 to 1.1), the dashpots and the friction coefficient being read at the half step (docs/time-step.md,
+// "Where the step's bias comes from").
 TEST(Sliding, MaxSlideConvergesAsTheStepFalls) {
   for (FrictionLaw law : {FrictionLaw::constant, FrictionLaw::exponential}) {
     const std::vector<double> safety_factors = {0.0025, 0.005, 0.01, 0.02, 0.04};
@@ -163,9 +164,13 @@ TEST(Sliding, WholeStepSliderIsSecondOrder) {
       const std::size_t samples = std::min(slides[k].size(), slides[k + 1].size());
       ASSERT_GT(samples, 1000u);
       double sum = 0.0;
-      for (std::size_t i = 0; i < samples; ++i) sum += (slides[k + 1][i] - slides[k][i]) * (slides[k + 1][i] - slides[k][i]);
+      for (std::size_t i = 0; i < samples; ++i)
+        sum += (slides[k + 1][i] - slides[k][i]) * (slides[k + 1][i] - slides[k][i]);
       const double x = std::log2(safety_factors[k + 1]), y = std::log2(std::sqrt(sum / samples));
-      sx += x; sy += y; sxx += x * x; sxy += x * y;
+      sx += x;
+      sy += y;
+      sxx += x * x;
+      sxy += x * y;
     }
     const double order = (n * sxy - sx * sy) / (n * sxx - sx * sx);
     RecordProperty(std::string(law.name) + " order", std::to_string(order));
