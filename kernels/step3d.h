@@ -96,7 +96,7 @@ CASKDEM_HOST_DEVICE inline void for_each_rim_node(const Contacts3D& contacts, co
 // springs that leave the arc take their share of the force with them (F_s(previous) scaled by
 // K_s / K_s(previous) when that is below 1), and springs that join it come unstretched (the
 // force kept). The centre's K_s is constant, and its force is kept as in 2D.
-// Always inlined, as rotate_about_body_axis is: a call spills every live SIMD register.
+// Always inlined: as a call (two a step) it would spill every live SIMD register of the step.
 template <FrictionLaw Law, class T, class Mask>
 CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p,
                                                                    const Mask& touching, const Mask& active,
