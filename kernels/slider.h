@@ -52,6 +52,12 @@ CASKDEM_HOST_DEVICE inline SliderVelocities<T> slider_velocities(std::int32_t wh
   return {half, normal.normal, shear.slip_x, shear.slip_z, friction.slip_x, friction.slip_z};
 }
 
+// A planar body's velocity (its centre of mass and its rotation rate).
+template <class T>
+struct BodyVelocity {
+  T vx, vy, omega;
+};
+
 // v(n-1/2) + kick / 2: the whole-step value of a half-step velocity from its last change.
 template <class T>
 CASKDEM_HOST_DEVICE inline T at_whole_step(const T& half_step, const T& kick) {

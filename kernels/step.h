@@ -46,11 +46,14 @@ CASKDEM_HOST_DEVICE inline void step(const Model& model, const LaneParameters<T>
   const SinCos<T> rotation = sin_cos(body.theta);
   const T s = rotation.sin;
   const T c = rotation.cos;
-  // The body's velocity at t_n, for the terms that read it there (kernels/slider.h).
+  // The body's velocity at t_n, for the terms that read it there (kernels/slider.h); the
+  // half-step slider reads none of it.
   const std::int32_t whole_step_terms = model.whole_step_terms;
-  const T vx_n = at_whole_step(body.vx, body.kick_vx);
-  const T vy_n = at_whole_step(body.vy, body.kick_vy);
-  const T omega_n = at_whole_step(body.omega, body.kick_omega);
+  BodyVelocity<T> at_n{body.vx, body.vy, body.omega};
+  if (whole_step_terms) {
+    at_n = {at_whole_step(body.vx, body.kick_vx), at_whole_step(body.vy, body.kick_vy),
+            at_whole_step(body.omega, body.kick_omega)};
+  }
   T force_x = zero, force_y = zero, moment = zero;
   T lowest_gap = broadcast<T>(1e300);
   T uplift = zero;
@@ -68,7 +71,8 @@ CASKDEM_HOST_DEVICE inline void step(const Model& model, const LaneParameters<T>
     const T lever_y = centre_y - radius;
     const ContactVelocity<T> half{body.vy + body.omega * lever_x, body.vx - body.omega * lever_y, zero};
     const ContactVelocity<T> whole =
-        whole_step_terms ? ContactVelocity<T>{vy_n + omega_n * lever_x, vx_n - omega_n * lever_y, zero} : half;
+        whole_step_terms ? ContactVelocity<T>{at_n.vy + at_n.omega * lever_x, at_n.vx - at_n.omega * lever_y, zero}
+                         : half;
     const CornerContact<T> contact =
         corner_contact<Law>(model, p, k, gap, slider_velocities(whole_step_terms, half, whole), corners[k]);
     force_x = force_x + contact.shear_force;

@@ -12,14 +12,12 @@
 #include <xsimd/xsimd.hpp>
 
 #include "kernels/portable_math.h"
+#include "support/ulps.h"
 
 namespace caskdem::kernels {
 namespace {
 
-double ulps_apart(double a, double b) {
-  if (a == b) return 0.0;
-  return std::abs(a - b) / std::abs(std::nextafter(b, 2.0 * b + 1.0) - b);
-}
+using testing::ulps_apart;
 
 TEST(PortableMath, ExpNegativeMatchesLibmToTwoUlp) {
   double worst = 0.0;
