@@ -39,7 +39,18 @@ void add_uncertainty_option(CLI::App* cmd, std::string& uncertainty, const std::
 void print_adequacy(const diagnosis::Adequacy& a) {
   std::cout << "adequate        " << (a.adequate ? "yes" : "no") << ": J " << std::setprecision(4) << a.statistic << " over "
             << a.residuals << " residuals (RMS " << std::setprecision(3) << a.rms_residual << "), p = " << a.p_value
-            << (a.fits_within_noise ? " (within noise)" : " (beyond noise)") << "\n";
+            << (a.global_fits ? " over every test (within noise)" : " over every test (beyond noise)") << "\n";
+  for (const diagnosis::FamilyFit& f : a.families) {
+    if (!f.misfits) continue;
+    std::cout << "  misfitting family: " << f.family << ", J " << std::setprecision(4) << f.statistic << " over "
+              << f.residuals << " residuals, p = " << std::setprecision(3) << f.p_value << " (Holm level " << f.holm_level
+              << ")";
+    if (f.magnitude_residuals > 0) {
+      std::cout << "; " << (f.mean_magnitude_residual < 0.0 ? "under" : "over") << "-predicted by "
+                << std::abs(f.mean_magnitude_residual) << " tolerances on average";
+    }
+    std::cout << "\n";
+  }
   if (!a.misfitting_tests.empty()) {
     std::cout << "  misfitting tests:";
     for (const std::string& t : a.misfitting_tests) std::cout << " " << t;

@@ -26,6 +26,7 @@
 // tests barely determine (a cask that slides only millimetres) can end anywhere a search
 // stops; that is not a misfit of the model.
 
+#include <cstdint>
 #include <functional>
 #include <string>
 #include <vector>
@@ -53,6 +54,29 @@ struct Misfit {
   double residual = 0.0;  // in tolerances
 };
 
+// Measures grouped by what they measure (measures.h), and the mechanisms (mechanisms.h) that
+// act on it: where a family misfits, these are the candidates.
+struct MeasureFamily {
+  std::string name;
+  std::string what;                     // in words, for the report
+  std::vector<std::string> measures;
+  std::vector<std::string> magnitudes;  // its measures whose sign says over- (+) or under-prediction (-)
+  std::vector<std::string> mechanisms;
+};
+const std::vector<MeasureFamily>& measure_families();
+
+// One family's goodness of fit.
+struct FamilyFit {
+  std::string family;
+  double statistic = 0.0;       // J_f: the robust loss of its residuals over every test
+  int residuals = 0;            // N_f
+  double p_value = 1.0;         // P(chi2_{N_f} >= J_f)
+  double holm_level = 0.0;      // the level Holm's step-down compared it with
+  bool misfits = false;
+  double mean_magnitude_residual = 0.0;  // mean signed residual of its magnitude measures (< 0: under-predicted)
+  int magnitude_residuals = 0;
+};
+
 struct ImplausibleValue {
   std::string parameter;
   double value = 0.0, nominal = 0.0;
@@ -66,22 +90,31 @@ struct Adequacy {
   int degrees_of_freedom = 0;    // N - k
   double p_value = 1.0;          // P(chi2_{N-k} >= statistic)
   double rms_residual = 0.0;     // sqrt(J / N)
+  bool global_fits = true;       // p_value >= kAdequacyLevel
+  std::vector<FamilyFit> families;                // in measure_families() order
+  std::vector<std::string> misfitting_families;   // rejected by Holm's step-down
   std::vector<std::string> misfitting_tests;  // each test's own p-value below kAdequacyLevel / tests
   std::vector<Misfit> misfits;                // |r| > kMisfitResidual
   std::vector<ImplausibleValue> implausible;
-  bool fits_within_noise = true;  // p_value >= kAdequacyLevel
+  bool fits_within_noise = true;  // the global test and every family pass
   bool adequate = true;           // fits within noise with plausible values
   std::vector<std::string> checks;  // what to check when it is not
 };
 
-// `loss`, `residuals` and `compared` per test (all tests); `nominal` the values the specimen
-// states for the baseline's parameters (friction, damping ratio, stiffness scale);
-// `training_objective` the J the fit minimised, at any point.
+// `loss`, `residuals` and `compared` per test (all tests; `compared` per measure, 1 where it is
+// compared: TestReference::compared); `nominal` the values the specimen states for the
+// baseline's parameters (friction, damping ratio, stiffness scale); `training_objective` the J
+// the fit minimised, at any point.
 using PointObjective = std::function<double(const std::vector<double>&)>;
 Adequacy judge_adequacy(const MeasuredSet& set, const std::vector<Parameter>& parameters, const FitResult& fit,
                         const std::vector<double>& nominal, const std::vector<double>& loss,
-                        const std::vector<std::vector<double>>& residuals, const std::vector<int>& compared,
+                        const std::vector<std::vector<double>>& residuals,
+                        const std::vector<std::vector<std::uint8_t>>& compared,
                         const PointObjective& training_objective);
+
+// Each family's goodness of fit and Holm's verdict, from every test's residuals.
+std::vector<FamilyFit> judge_families(const std::vector<std::vector<double>>& residuals,
+                                      const std::vector<std::vector<std::uint8_t>>& compared);
 
 // P(chi2_nu >= x).
 double chi_square_survival(double x, int degrees_of_freedom);

@@ -185,8 +185,8 @@ FitOptions fit_options_of(const MeasuredSet& set) {
 
 Adequacy adequacy_of(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant, const ModelFit& m,
                      const DiagnosisOptions& options) {
-  std::vector<int> compared;
-  for (const TestReference& r : yardstick.references) compared.push_back(static_cast<int>(compared_count(r)));
+  std::vector<std::vector<std::uint8_t>> compared;
+  for (const TestReference& r : yardstick.references) compared.push_back(r.compared);
   const PointObjective training = [&](const std::vector<double>& x) {
     return objective_over(set, yardstick, variant, set.training, {x}, options).front();
   };
@@ -402,19 +402,47 @@ ModelFit fit_baseline(const MeasuredSet& set, const Yardstick& yardstick, const 
 // only when it predicts them by at least minimum_gain better: the analyst's rule stands unless
 // the data speak against it.
 struct FootprintChoice {
-  std::optional<MeasuredSet> set;  // the data on the chosen rule, when it is not the stated one
-  Yardstick yardstick;             // of the chosen rule
-  ModelFit baseline;               // calibrated on it
+  std::vector<MeasuredSet> sets;     // the data on each rule tried
+  std::vector<Yardstick> yardsticks;
+  std::vector<ModelFit> fits;        // the baseline calibrated on each
+  std::vector<Footprint> tried;
+  std::size_t stated = 0, chosen = 0;
   std::vector<FootprintScore> scores;
 };
 
+// Each rule's calibration judged on the held-out tests at tolerances common to every rule.
+std::vector<FootprintScore> footprint_scores(const MeasuredSet& given, const FootprintChoice& c,
+                                             const DiagnosisOptions& options) {
+  Yardstick common = c.yardsticks[c.stated];
+  for (int t : given.heldout) {
+    for (const ModelFit& fit : c.fits) {
+      for (std::size_t m = 0; m < fit.heldout_tolerance[t].size(); ++m) {
+        common.references[t].tolerance[m] = std::max(common.references[t].tolerance[m], fit.heldout_tolerance[t][m]);
+      }
+    }
+  }
+  std::vector<FootprintScore> scores;
+  for (std::size_t i = 0; i < c.fits.size(); ++i) {
+    const ModelVariant variant(c.sets[i].specimen, {}, c.sets[i].vertical_measured);
+    Judged judged;
+    (void)objective_over(c.sets[i], common, variant, given.heldout, {c.fits[i].fit.best}, options, &judged);
+    FootprintScore score;
+    score.footprint = footprint_name(c.tried[i]);
+    score.stated = i == c.stated;
+    score.heldout_error = error_of(judged.loss, common, given.heldout);
+    score.baseline = c.fits[i];
+    scores.push_back(std::move(score));
+  }
+  const double stated_error = scores[c.stated].heldout_error;
+  for (FootprintScore& score : scores) {
+    score.heldout_gain = stated_error > 0.0 ? 1.0 - score.heldout_error / stated_error : 0.0;
+  }
+  return scores;
+}
+
 FootprintChoice choose_footprint(const MeasuredSet& given, const DiagnosisOptions& options) {
   const Footprint stated = *footprint_of(given.specimen);
-  std::vector<MeasuredSet> sets;
-  std::vector<Yardstick> yardsticks;
-  std::vector<ModelFit> fits;
-  std::size_t stated_index = 0;
-  std::vector<Footprint> tried;
+  FootprintChoice choice;
   for (Footprint f : all_footprints()) {
     MeasuredSet s = given;
     try {
@@ -424,47 +452,23 @@ FootprintChoice choose_footprint(const MeasuredSet& given, const DiagnosisOption
       say(options, "footprint " + footprint_name(f) + " not tried: " + e.what());
       continue;
     }
-    if (f == stated) stated_index = sets.size();
-    tried.push_back(f);
+    if (f == stated) choice.stated = choice.sets.size();
+    choice.tried.push_back(f);
     say(options, "footprint " + footprint_name(f) + ": judging how predictable each test is");
-    yardsticks.push_back(yardstick_of(s, options));
+    choice.yardsticks.push_back(yardstick_of(s, options));
     say(options, "footprint " + footprint_name(f) + ": fitting the baseline");
-    fits.push_back(fit_baseline(s, yardsticks.back(), options));
-    sets.push_back(std::move(s));
+    choice.fits.push_back(fit_baseline(s, choice.yardsticks.back(), options));
+    choice.sets.push_back(std::move(s));
   }
-  Yardstick common = yardsticks[stated_index];
-  for (int t : given.heldout) {
-    for (const ModelFit& fit : fits) {
-      for (std::size_t m = 0; m < fit.heldout_tolerance[t].size(); ++m) {
-        common.references[t].tolerance[m] = std::max(common.references[t].tolerance[m], fit.heldout_tolerance[t][m]);
-      }
-    }
-  }
-  FootprintChoice choice;
-  for (std::size_t i = 0; i < fits.size(); ++i) {
-    const ModelVariant variant(sets[i].specimen, {}, sets[i].vertical_measured);
-    Judged judged;
-    (void)objective_over(sets[i], common, variant, given.heldout, {fits[i].fit.best}, options, &judged);
-    FootprintScore score;
-    score.footprint = footprint_name(tried[i]);
-    score.stated = i == stated_index;
-    score.heldout_error = error_of(judged.loss, common, given.heldout);
-    score.baseline = fits[i];
-    choice.scores.push_back(std::move(score));
-  }
-  std::size_t chosen = stated_index;
-  const double stated_error = choice.scores[stated_index].heldout_error;
+  choice.scores = footprint_scores(given, choice, options);
+  choice.chosen = choice.stated;
   for (std::size_t i = 0; i < choice.scores.size(); ++i) {
-    FootprintScore& score = choice.scores[i];
-    score.heldout_gain = stated_error > 0.0 ? 1.0 - score.heldout_error / stated_error : 0.0;
-    if (score.heldout_gain >= options.minimum_gain && score.heldout_error < choice.scores[chosen].heldout_error) {
-      chosen = i;
+    const FootprintScore& score = choice.scores[i];
+    if (score.heldout_gain >= options.minimum_gain && score.heldout_error < choice.scores[choice.chosen].heldout_error) {
+      choice.chosen = i;
     }
   }
-  choice.scores[chosen].chosen = true;
-  if (chosen != stated_index) choice.set = std::move(sets[chosen]);
-  choice.yardstick = std::move(yardsticks[chosen]);
-  choice.baseline = std::move(fits[chosen]);
+  choice.scores[choice.chosen].chosen = true;
   return choice;
 }
 
@@ -604,13 +608,10 @@ Diagnosis diagnose(const MeasuredSet& given, const DiagnosisOptions& options) {
   // The footprint first: the mechanisms are fitted on the rule the held-out tests prefer.
   std::optional<FootprintChoice> footprint;
   if (options.choose_footprint && footprint_of(given.specimen)) footprint = choose_footprint(given, options);
-  const MeasuredSet& set = footprint && footprint->set ? *footprint->set : given;
-  const Yardstick yardstick = footprint ? std::move(footprint->yardstick) : yardstick_of(set, options);
-  d.baseline = footprint ? std::move(footprint->baseline) : fit_baseline(set, yardstick, options);
-  if (footprint) {
-    d.footprints = std::move(footprint->scores);
-    d.footprint_changed = footprint->set.has_value();
-  }
+  const MeasuredSet& set = footprint ? footprint->sets[footprint->chosen] : given;
+  const Yardstick yardstick = footprint ? footprint->yardsticks[footprint->chosen] : yardstick_of(set, options);
+  d.baseline = footprint ? footprint->fits[footprint->chosen] : fit_baseline(set, yardstick, options);
+  d.footprint_changed = footprint && footprint->chosen != footprint->stated;
   if (const std::optional<Footprint> f = footprint_of(set.specimen)) d.footprint = footprint_name(*f);
   d.specimen = set.specimen;
   const ModelVariant baseline_variant(set.specimen, {}, set.vertical_measured);
@@ -637,6 +638,14 @@ Diagnosis diagnose(const MeasuredSet& given, const DiagnosisOptions& options) {
     ModelFit refined = fit_variant(set, yardstick, baseline_variant, starts, options);
     if (refined.fit.objective < d.baseline.fit.objective) d.baseline = std::move(refined);
   }
+  if (footprint) {
+    // One calibration per rule: the chosen rule's row is the baseline reported and ranked
+    // against, refined or not, and every row is judged again at tolerances common to the rows
+    // as they now stand. The choice stays: the mechanisms were fitted on that rule.
+    footprint->fits[footprint->chosen] = d.baseline;
+    d.footprints = footprint_scores(given, *footprint, options);
+    d.footprints[footprint->chosen].chosen = true;
+  }
   for (CandidateScore& c : d.ranking) {
     const ModelVariant variant(set.specimen, {c.mechanism}, set.vertical_measured);
     if (c.model.fit.objective > d.baseline.fit.objective) c.model = switched_off(d.baseline, variant);
@@ -658,6 +667,7 @@ Diagnosis diagnose(const MeasuredSet& given, const DiagnosisOptions& options) {
                      ": refitting without each training test in turn (jackknife)");
     add_jackknife(set, yardstick, d.baseline, options);
     if (cause != d.ranking.end()) add_jackknife(set, yardstick, cause->model, options);
+    if (footprint) d.footprints[footprint->chosen].baseline = d.baseline;  // its errors too
   }
   if (cause != d.ranking.end()) d.cause = mechanism_name(cause->mechanism);
   else if (d.footprint_changed) d.cause = "footprint";

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <fstream>
 #include <iterator>
+#include <random>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -65,7 +66,7 @@ TEST(Adequacy, ResidualsWithinTheirTolerancesFitAndManyBeyondDoNot) {
   const PointObjective excludes_everything = [](const std::vector<double>&) { return 1e6; };
   const std::vector<double> nominal = fit.best;
   const std::size_t tests = made.set.tests.size(), measures = measure_names().size();
-  const std::vector<int> compared(tests, static_cast<int>(measures));
+  const std::vector<std::vector<std::uint8_t>> compared(tests, std::vector<std::uint8_t>(measures, 1));
   const auto judged = [&](double r) {
     const std::vector<std::vector<double>> residuals(tests, std::vector<double>(measures, r));
     std::vector<double> loss(tests, robust_loss(residuals[0]));
@@ -98,6 +99,77 @@ TEST(Adequacy, ResidualsWithinTheirTolerancesFitAndManyBeyondDoNot) {
                                                std::vector<double>(tests, robust_loss(small[0])), small, compared,
                                                [](const std::vector<double>&) { return kLikelihoodRatioBound - 1.0; });
   EXPECT_TRUE(undetermined.adequate);
+}
+
+// Six tests' residuals, every measure at `r`.
+std::vector<std::vector<double>> uniform_residuals(double r) {
+  return std::vector<std::vector<double>>(6, std::vector<double>(measure_names().size(), r));
+}
+
+TEST(Adequacy, ASlidingMisfitInTwoTestsIsNotAveragedAway) {
+  // The independent generator's hidden Stribeck friction, as the baseline meets it: every
+  // measure within a tolerance but the sliding of two tests, under-predicted by 4 to 5.
+  std::vector<std::vector<double>> residuals = uniform_residuals(0.8);
+  for (int t : {1, 4}) {
+    residuals[t][measure_index("max_sliding")] = t == 1 ? -5.0 : -4.1;
+    residuals[t][measure_index("residual_sliding")] = t == 1 ? -4.6 : -3.8;
+  }
+  const std::vector<std::vector<std::uint8_t>> compared(6, std::vector<std::uint8_t>(measure_names().size(), 1));
+  double loss = 0.0;
+  for (const auto& r : residuals) loss += robust_loss(r);
+  const int dof = 60 - 3;
+  ASSERT_GT(chi_square_survival(loss, dof), kAdequacyLevel) << "the global test alone would call it adequate";
+  const std::vector<FamilyFit> families = judge_families(residuals, compared);
+  ASSERT_EQ(families.size(), measure_families().size());
+  for (const FamilyFit& f : families) {
+    EXPECT_EQ(f.misfits, f.family == "sliding") << f.family << " p " << f.p_value;
+    if (f.family == "sliding") {
+      EXPECT_EQ(f.residuals, 18);
+      EXPECT_LT(f.mean_magnitude_residual, 0.0);  // under-predicted
+      EXPECT_DOUBLE_EQ(f.holm_level, kAdequacyLevel / 4.0);  // the smallest p-value meets Bonferroni's level
+    }
+  }
+  // Every residual within a tolerance: no family misfits.
+  for (const FamilyFit& f : judge_families(uniform_residuals(0.8), compared)) EXPECT_FALSE(f.misfits) << f.family;
+  // A measure that is not compared does not count.
+  std::vector<std::vector<std::uint8_t>> without_sliding = compared;
+  for (auto& c : without_sliding) c[measure_index("max_sliding")] = c[measure_index("residual_sliding")] = 0;
+  for (const FamilyFit& f : judge_families(residuals, without_sliding)) {
+    EXPECT_FALSE(f.misfits) << f.family;
+    if (f.family == "sliding") {
+      EXPECT_EQ(f.residuals, 6);
+    }
+  }
+}
+
+TEST(Adequacy, FamiliesKeepTheFamilyWiseFalseAlarmRate) {
+  // Holm's step-down keeps the chance that any family of a model that fits within noise is
+  // called a misfit at or below the level, whatever the families' dependence (Holm 1979). Here
+  // each residual is a standard normal draw, the noise a tolerance allows; pseudo-Huber is at
+  // most r^2, so the rate is below the level.
+  const std::size_t measures = measure_names().size();
+  const std::vector<std::vector<std::uint8_t>> compared(6, std::vector<std::uint8_t>(measures, 1));
+  std::mt19937_64 random(20261127);
+  std::normal_distribution<double> normal;
+  const int sets = 200000;
+  int alarms = 0;
+  std::vector<std::vector<double>> residuals(6, std::vector<double>(measures));
+  for (int s = 0; s < sets; ++s) {
+    for (auto& test : residuals) {
+      for (double& r : test) r = normal(random);
+    }
+    const std::vector<FamilyFit> families = judge_families(residuals, compared);
+    alarms += std::any_of(families.begin(), families.end(), [](const FamilyFit& f) { return f.misfits; });
+  }
+  // At most the level, with three binomial standard deviations of this many sets.
+  const double expected = kAdequacyLevel * sets;
+  RecordProperty("false_alarms", alarms);
+  EXPECT_LE(alarms, expected + 3.0 * std::sqrt(expected)) << alarms << " of " << sets;
+  // And the test has power: one measure of every test off by 3 tolerances is found.
+  for (auto& test : residuals) std::fill(test.begin(), test.end(), 0.0);
+  for (auto& test : residuals) test[measure_index("rotation_asymmetry")] = 3.0;
+  const std::vector<FamilyFit> shifted = judge_families(residuals, compared);
+  for (const FamilyFit& f : shifted) EXPECT_EQ(f.misfits, f.family == "asymmetry") << f.family;
 }
 
 TEST(Adequacy, TheBaselineOnItsOwnRuleFitsAndOnTheWrongRuleDoesNot) {

@@ -4,9 +4,11 @@
 // mechanism is significant exactly when it clears the three criteria and is not at its off
 // value; one at its off value has no gain; the cause is the first significant mechanism, else
 // "footprint" when another rule was kept, else "unexplained" when the baseline misfits, else
-// "none"; diagnosis.json says the same. The search is cut to a few points (the answer's
-// accuracy is test_hidden_effects.cpp's business), so this runs in seconds and under the
-// sanitizers (scripts/sanitize.sh), where the full diagnoses are too slow.
+// "none"; the baseline fits within noise only when the global test and every family of
+// measures pass; the footprint table's row for the rule kept is the baseline reported;
+// diagnosis.json says the same. The search is cut to a few points (the answer's accuracy is
+// test_hidden_effects.cpp's business), so this runs in seconds and under the sanitizers
+// (scripts/sanitize.sh), where the full diagnoses are too slow.
 
 #include <cmath>
 #include <fstream>
@@ -16,6 +18,7 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
+#include "diagnosis/adequacy.h"
 #include "diagnosis/diagnose.h"
 #include "diagnosis/report.h"
 #include "diagnosis/synthesize.h"
@@ -84,11 +87,22 @@ TEST(DecisionInvariants, TheAnswerFollowsItsStatedRules) {
     chosen += f.chosen;
     if (f.chosen) {
       EXPECT_EQ(f.footprint, d.footprint);
+      // One calibration per rule: the table's row for the rule kept is the baseline reported.
+      EXPECT_EQ(f.baseline.fit.best, d.baseline.fit.best);
+      EXPECT_EQ(f.baseline.adequacy.adequate, d.baseline.adequacy.adequate);
     }
   }
   ASSERT_FALSE(d.footprints.empty()) << "a cylinder's rules are all tried";
   EXPECT_EQ(stated, 1);
   EXPECT_EQ(chosen, 1);
+
+  // Within noise only when the global test and every family pass (adequacy.h).
+  const Adequacy& a = d.baseline.adequacy;
+  ASSERT_EQ(a.families.size(), measure_families().size());
+  bool family_misfits = false;
+  for (const FamilyFit& f : a.families) family_misfits = family_misfits || f.misfits;
+  EXPECT_EQ(a.fits_within_noise, a.global_fits && !family_misfits);
+  EXPECT_EQ(a.adequate, a.fits_within_noise && a.implausible.empty());
 
   const CandidateScore* cause = first_significant(d.ranking);
   if (cause) {
@@ -107,6 +121,10 @@ TEST(DecisionInvariants, TheAnswerFollowsItsStatedRules) {
   std::ifstream in(report / "diagnosis.json");
   const nlohmann::json j = nlohmann::json::parse(in);
   EXPECT_EQ(j.at("cause").get<std::string>(), d.cause);
+  ASSERT_EQ(j["baseline"]["adequacy"].at("families").size(), a.families.size());
+  for (std::size_t i = 0; i < a.families.size(); ++i) {
+    EXPECT_EQ(j["baseline"]["adequacy"]["families"][i].at("misfits").get<bool>(), a.families[i].misfits);
+  }
   ASSERT_EQ(j.at("ranking").size(), d.ranking.size());
   for (std::size_t i = 0; i < d.ranking.size(); ++i) {
     EXPECT_EQ(j["ranking"][i].at("mechanism").get<std::string>(), mechanism_name(d.ranking[i].mechanism));
