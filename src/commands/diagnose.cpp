@@ -146,11 +146,13 @@ void add_diagnose(CLI::App& app) {
       print_adequacy(d.baseline.adequacy);
       if (!d.second_cause.empty()) std::cout << "second effect   " << d.second_cause << "\n";
       std::cout << std::left << std::setw(34) << "mechanism" << std::setw(15) << "held-out gain" << std::setw(12)
-                << "BIC delta" << "significant\n";
+                << "BIC delta" << std::setw(24) << "significant" << "profile likelihood ratio (p)\n";
       for (const diagnosis::CandidateScore& c : d.ranking) {
         std::cout << std::left << std::setw(34) << diagnosis::mechanism_name(c.mechanism) << std::setw(15)
-                  << std::setprecision(3) << c.heldout_gain << std::setw(12) << c.bic_delta
-                  << diagnosis::significance_text(c) << "\n";
+                  << std::setprecision(3) << c.heldout_gain << std::setw(12) << c.bic_delta << std::setw(24)
+                  << diagnosis::significance_text(c);
+        if (c.profile) std::cout << c.profile->likelihood_ratio << " (" << std::setprecision(2) << c.profile->p_value << ")";
+        std::cout << "\n";
       }
       diagnosis::write_diagnosis(out, set, d, InstructionSet::automatic, !options->no_plot);
       std::cout << "wall time       " << std::setprecision(4) << d.wall_seconds << " s\n";

@@ -11,7 +11,10 @@
 //  2. Measure its discrepancy on every test (src/diagnosis/measures.h) and look for structure
 //     in it: residuals against amplitude, sliding speed, impact speed, rotation sign, vertical
 //     acceleration and time (a lag between simulated and measured rotation).
-//  3. For each mechanism, fit baseline + mechanism (all parameters) on the training tests.
+//  3. For each mechanism, its profile (profile.h): J minimised over the baseline's parameters at
+//     each point of a grid across the mechanism's own, so that a value of the mechanism that
+//     lowers J is not missed; then baseline + mechanism fitted (all parameters) on the training
+//     tests from the profile's minimum and the baseline's fit, its J never above the profile's.
 //  4. Score each on the held-out tests (fractional reduction of the held-out error against
 //     the baseline) and by the Bayesian information criterion on the training tests, which
 //     charges the extra parameters: with N scaled residuals, their loss J (pseudo-Huber:
@@ -48,6 +51,7 @@
 #include "diagnosis/fitting.h"
 #include "diagnosis/measured_set.h"
 #include "diagnosis/measures.h"
+#include "diagnosis/profile.h"
 #include "kernels/block.h"
 
 namespace caskdem::diagnosis {
@@ -66,6 +70,10 @@ struct DiagnosisOptions {
   // where larger (refits without each training test; fitting.h). Costs a fit per training test.
   // Off here (the tests need no errors); the commands turn it on unless asked not to.
   bool jackknife = false;
+  // Each mechanism's profile over its own parameters (profile.h) before its fit; the grid
+  // points' searches take half the [diagnosis] evaluations each (at least 10).
+  bool profile = true;
+  ProfileOptions profile_options;
   std::function<void(const std::string&)> log;  // progress lines (may be empty)
 };
 
@@ -107,6 +115,9 @@ struct CandidateScore {
   // model it extends, whatever its gain says.
   bool at_off_value = false;
   bool significant = false;
+  // The mechanism's profile (profile.h), when one was made: its likelihood-ratio statistic
+  // against the baseline and the interval of each own parameter.
+  std::optional<Profile> profile;
 };
 
 struct StructureRow {

@@ -345,6 +345,87 @@ FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<
   return result;
 }
 
+std::vector<SearchEnd> search_from_each(const std::vector<Parameter>& space, const std::vector<std::vector<double>>& starts,
+                                        const std::vector<bool>& free, const PopulationObjective& objective,
+                                        int evaluations, double initial_step, FitResult& tally) {
+  const std::size_t n = space.size();
+  std::vector<std::size_t> moving;
+  for (std::size_t i = 0; i < n; ++i) {
+    if (free[i]) moving.push_back(i);
+  }
+  std::vector<std::vector<double>> start_units;
+  for (const std::vector<double>& start : starts) {
+    std::vector<double> u(n);
+    for (std::size_t i = 0; i < n; ++i) u[i] = to_unit(space[i], start[i]);
+    start_units.push_back(std::move(u));
+  }
+  const int searches = static_cast<int>(starts.size());
+  Lockstep lockstep(searches, space, objective);
+  std::vector<SearchResult> ends(searches);
+  std::vector<std::thread> threads;
+  for (int s = 0; s < searches; ++s) {
+    threads.emplace_back([&, s] {
+      // The search's own best point: BOBYQA's returned point is its best, but a search that
+      // stops on an error keeps the best it saw.
+      SearchResult best{start_units[s], std::numeric_limits<double>::infinity()};
+      try {
+        struct Context {
+          Lockstep* lockstep;
+          int search;
+          const std::vector<std::size_t>* moving;
+          SearchResult* best;
+        } context{&lockstep, s, &moving, &best};
+        struct Bridge {
+          static double call(unsigned count, const double* v, double*, void* data) {
+            auto* c = static_cast<Context*>(data);
+            std::vector<double> u = c->best->unit;
+            for (unsigned k = 0; k < count; ++k) u[(*c->moving)[k]] = v[k];
+            const double value = c->lockstep->evaluate(c->search, u);
+            if (value < c->best->value) *c->best = {u, value};
+            return value;
+          }
+        };
+        if (moving.empty()) {
+          (void)Bridge::call(0, nullptr, nullptr, &context);
+        } else {
+          const unsigned m = static_cast<unsigned>(moving.size());
+          nlopt::opt search(nlopt::LN_BOBYQA, m);
+          search.set_lower_bounds(std::vector<double>(m, 0.0));
+          search.set_upper_bounds(std::vector<double>(m, 1.0));
+          search.set_maxeval(evaluations);
+          search.set_xtol_abs(1e-4);
+          search.set_initial_step(std::vector<double>(m, initial_step));
+          search.set_min_objective(Bridge::call, &context);
+          std::vector<double> v(m);
+          for (unsigned k = 0; k < m; ++k) v[k] = start_units[s][moving[k]];
+          double value = 0.0;
+          try {
+            search.optimize(v, value);
+          } catch (const nlopt::roundoff_limited&) {
+          } catch (const std::runtime_error&) {
+            // NLopt reports a generic failure on noisy objectives at times; the best point seen stands.
+          }
+        }
+      } catch (...) {
+        // A search that could not run leaves its start, at an infinite value.
+      }
+      ends[s] = best;
+      lockstep.finished();
+    });
+  }
+  lockstep.serve(tally.evaluations, tally.populations);
+  for (std::thread& t : threads) t.join();
+  if (lockstep.failure()) std::rethrow_exception(lockstep.failure());
+  std::vector<SearchEnd> out;
+  for (const SearchResult& end : ends) {
+    SearchEnd e;
+    for (std::size_t i = 0; i < n; ++i) e.best.push_back(from_unit(space[i], end.unit[i]));
+    e.objective = end.value;
+    out.push_back(std::move(e));
+  }
+  return out;
+}
+
 void jackknife_errors(const std::vector<Parameter>& space, FitResult& fit,
                       const std::vector<std::vector<double>>& references, const LeaveOneOutObjective& objective,
                       int clusters, FitOptions options) {

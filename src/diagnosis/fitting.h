@@ -76,6 +76,19 @@ struct FitResult {
 FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<std::vector<double>>& references,
                          const PopulationObjective& objective, const FitOptions& options, int residual_count);
 
+// Local searches side by side (BOBYQA), one from each start (physical values), each over the
+// parameters `free` marks while the others keep their start's values: every search's points
+// are evaluated together, one population per round. A profile's shape: a grid over some
+// parameters, the others re-optimised at each grid point (diagnosis/profile.h). Each end is
+// the best point its search saw; `tally` counts the evaluations and populations.
+struct SearchEnd {
+  std::vector<double> best;  // physical values
+  double objective = 0.0;
+};
+std::vector<SearchEnd> search_from_each(const std::vector<Parameter>& space, const std::vector<std::vector<double>>& starts,
+                                        const std::vector<bool>& free, const PopulationObjective& objective,
+                                        int evaluations, double initial_step, FitResult& tally);
+
 double to_unit(const Parameter& p, double value);
 double from_unit(const Parameter& p, double unit);
 

@@ -121,6 +121,29 @@ nlohmann::json candidate_json(const CandidateScore& c) {
   for (std::size_t m = 0; m < measure_names().size(); ++m) gain[measure_names()[m]] = c.measure_gain[m];
   j["gain"] = gain;
   j["fit"] = fit_json(c.model);
+  if (c.profile) {
+    const Profile& p = *c.profile;
+    nlohmann::json profile;
+    profile["parameters"] = p.parameters;
+    profile["units"] = p.units;
+    profile["grid"] = nlohmann::json::array();
+    for (const ProfilePoint& point : p.grid) {
+      profile["grid"].push_back({{"values", point.values}, {"training_objective", point.objective}, {"point", point.best}});
+    }
+    profile["minimum"] = p.minimum;
+    profile["off"] = p.off;
+    profile["likelihood_ratio"] = p.likelihood_ratio;
+    profile["p_value"] = p.p_value;
+    profile["interval_bound"] = kProfileBound;
+    for (std::size_t i = 0; i < p.parameters.size(); ++i) {
+      profile["interval"][p.parameters[i]] = {p.interval_low[i], p.interval_high[i]};
+    }
+    profile["evaluations"] = p.evaluations;
+    profile["populations"] = p.populations;
+    j["profile"] = profile;
+  } else {
+    j["profile"] = nullptr;
+  }
   return j;
 }
 
@@ -381,8 +404,9 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
        << r.points_to << " |\n";
   }
   md << "\n![residuals](residuals.png)\n\n## Mechanisms, ranked by held-out gain\n\n"
-     << "| mechanism | held-out gain | BIC delta | held-out tests improved | significant | parameters |\n"
-     << "|---|---|---|---|---|---|\n";
+     << "| mechanism | held-out gain | BIC delta | held-out tests improved | significant | parameters | profile: "
+        "likelihood ratio (p) | profile interval (J within 3.84 of its minimum) |\n"
+     << "|---|---|---|---|---|---|---|---|\n";
   for (const CandidateScore& c : d.ranking) {
     md << "| " << mechanism_name(c.mechanism) << " | " << number(c.heldout_gain, 3) << " | " << number(c.bic_delta, 3)
        << " | " << c.heldout_tests_improved << "/" << set.heldout.size() << " | " << significance_text(c) << " | ";
@@ -390,7 +414,17 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
       md << c.model.parameters[i].name << " = " << number(c.model.fit.best[i], 3) << " "
          << c.model.parameters[i].units << " (" << uncertainty_text(c.model, i) << "); ";
     }
-    md << "|\n";
+    md << "| ";
+    if (c.profile) {
+      md << number(c.profile->likelihood_ratio, 3) << " (" << number(c.profile->p_value, 2) << ") | ";
+      for (std::size_t i = 0; i < c.profile->parameters.size(); ++i) {
+        md << c.profile->parameters[i] << " " << number(c.profile->interval_low[i], 3) << " to "
+           << number(c.profile->interval_high[i], 3) << " " << c.profile->units[i] << "; ";
+      }
+      md << "|\n";
+    } else {
+      md << "- | - |\n";
+    }
   }
   md << "\n![ranking](ranking.png)\n\n";
   if (chosen) {

@@ -4,11 +4,12 @@
 // mechanism is significant exactly when it clears the three criteria and is not at its off
 // value; one at its off value has no gain; the cause is the first significant mechanism, else
 // "footprint" when another rule was kept, else "unexplained" when the baseline misfits, else
-// "none"; the baseline fits within noise only when the global test and every family of
-// measures pass; the footprint table's row for the rule kept is the baseline reported;
-// diagnosis.json says the same. The search is cut to a few points (the answer's accuracy is
-// test_hidden_effects.cpp's business), so this runs in seconds and under the sanitizers
-// (scripts/sanitize.sh), where the full diagnoses are too slow.
+// "none"; every mechanism is profiled and its fit is never above its profile's minimum; the
+// baseline fits within noise only when the global test and every family of measures pass; the
+// footprint table's row for the rule kept is the baseline reported; diagnosis.json says the
+// same. The search is cut to a few points (the answer's accuracy is test_hidden_effects.cpp's
+// business), so this runs in seconds and under the sanitizers (scripts/sanitize.sh), where the
+// full diagnoses are too slow.
 
 #include <cmath>
 #include <fstream>
@@ -96,6 +97,14 @@ TEST(DecisionInvariants, TheAnswerFollowsItsStatedRules) {
   EXPECT_EQ(stated, 1);
   EXPECT_EQ(chosen, 1);
 
+  // Every mechanism was profiled, and its fit is never above its profile's minimum (a fit that
+  // ended above is repeated from it; profile.h).
+  for (const CandidateScore& c : d.ranking) {
+    ASSERT_TRUE(c.profile.has_value()) << mechanism_name(c.mechanism);
+    EXPECT_LE(c.model.fit.objective, c.profile->grid[c.profile->minimum].objective) << mechanism_name(c.mechanism);
+    EXPECT_GE(c.profile->likelihood_ratio, 0.0);
+  }
+
   // Within noise only when the global test and every family pass (adequacy.h).
   const Adequacy& a = d.baseline.adequacy;
   ASSERT_EQ(a.families.size(), measure_families().size());
@@ -130,6 +139,7 @@ TEST(DecisionInvariants, TheAnswerFollowsItsStatedRules) {
     EXPECT_EQ(j["ranking"][i].at("mechanism").get<std::string>(), mechanism_name(d.ranking[i].mechanism));
     EXPECT_EQ(j["ranking"][i].at("heldout_gain").get<double>(), d.ranking[i].heldout_gain);
     EXPECT_EQ(j["ranking"][i].at("significant").get<bool>(), d.ranking[i].significant);
+    EXPECT_EQ(j["ranking"][i]["profile"].at("likelihood_ratio").get<double>(), d.ranking[i].profile->likelihood_ratio);
   }
 }
 
