@@ -45,7 +45,7 @@ diagnose_set() {
   dir=$1 effect=$2 seed=$3
   # The generator's specimen.toml ends with its [diagnosis] table.
   [ "$inputs" = 1 ] || echo "input_realisations = $inputs" >>"$dir/specimen.toml"
-  "$caskdem" diagnose "$dir" --out "$dir/diagnosis" --quiet --no-plot --uncertainty "$uncertainty" ${SECOND_EFFECT:---no-second-effect} >/dev/null
+  "$caskdem" diagnose "$dir" --out "$dir/diagnosis" --quiet --no-plot --uncertainty "$uncertainty" --no-plan ${SECOND_EFFECT:---no-second-effect} >/dev/null
   /usr/bin/python3 - "$dir/diagnosis/diagnosis.json" "$effect" "$seed" >>"$out" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))

@@ -10,6 +10,7 @@
 
 #include "commands/commands.h"
 #include "commands/validators.h"
+#include "diagnosis/plan_report.h"
 #include "diagnosis/report.h"
 #include "diagnosis/synthesize.h"
 #include "io/output_paths.h"
@@ -114,7 +115,7 @@ void add_diagnose(CLI::App& app) {
     struct Options {
       std::string directory, out;
       int threads = 0;
-      bool quiet = false, no_plot = false, no_second_effect = false;
+      bool quiet = false, no_plot = false, no_second_effect = false, no_plan = false;
       std::string uncertainty = "jackknife";
     };
     auto options = std::make_shared<Options>();
@@ -125,6 +126,8 @@ void add_diagnose(CLI::App& app) {
     cmd->add_option("--threads", options->threads, "OpenMP threads")->check(thread_count());
     cmd->add_flag("--quiet", options->quiet, "No progress lines");
     cmd->add_flag("--no-plot", options->no_plot, "Do not make the PNGs");
+    cmd->add_flag("--no-plan", options->no_plan,
+                  "Do not look for the table tests that would tell the leading candidates apart (plan-test)");
     cmd->add_flag("--no-second-effect", options->no_second_effect,
                   "Do not fit the other mechanisms on top of the cause (faster; the cause is the same)");
     add_uncertainty_option(cmd, options->uncertainty, ", for the baseline and the cause");
@@ -137,6 +140,8 @@ void add_diagnose(CLI::App& app) {
       diagnosis::DiagnosisOptions run_options = options_for(options->threads, options->quiet, options->uncertainty);
       run_options.look_for_second_effect = !options->no_second_effect;
       const diagnosis::Diagnosis d = diagnosis::diagnose(set, run_options);
+      std::optional<diagnosis::TestPlan> plan;
+      if (!options->no_plan) plan = diagnosis::plan_tests(set, d.specimen, diagnosis::leading_candidates(d), run_options);
       std::cout << "cause           " << d.cause << "\n";
       for (const diagnosis::FootprintScore& f : d.footprints) {
         std::cout << "footprint       " << std::left << std::setw(12) << f.footprint << " held-out error "
@@ -154,7 +159,8 @@ void add_diagnose(CLI::App& app) {
         if (c.profile) std::cout << c.profile->likelihood_ratio << " (" << std::setprecision(2) << c.profile->p_value << ")";
         std::cout << "\n";
       }
-      diagnosis::write_diagnosis(out, set, d, InstructionSet::automatic, !options->no_plot);
+      if (plan) print_plan(*plan);
+      diagnosis::write_diagnosis(out, set, d, InstructionSet::automatic, !options->no_plot, plan ? &*plan : nullptr);
       std::cout << "wall time       " << std::setprecision(4) << d.wall_seconds << " s\n";
       std::cout << "wrote           " << out.string() << "/ (diagnosis.json, report.md"
                 << (options->no_plot ? "" : ", PNGs") << ")\n";

@@ -66,6 +66,7 @@ int main(int argc, char** argv) {
   caskdem::commands::add_plot(app);
   caskdem::commands::add_diagnose(app);
   caskdem::commands::add_evaluate_measured(app);
+  caskdem::commands::add_plan_test(app);
   caskdem::commands::add_risk(app);
   try {
     app.parse(argc, argv);

@@ -75,6 +75,33 @@ Case read_specimen(const std::filesystem::path& specimen, DiagnosisSettings* set
         whole_number_in(t, "input_realisations", defaults.input_realisations, 1, 64, "table inputs per test");
     t.reject_unknown_keys();
   }
+  if (root.has_table("table")) {
+    TableReader t = root.table("table");
+    TableLimits limits;
+    limits.peak_acceleration = t.positive("peak_acceleration", t.quantity("peak_acceleration", Dimension::acceleration));
+    limits.peak_velocity = t.positive("peak_velocity", t.quantity("peak_velocity", Dimension::velocity));
+    limits.stroke = t.positive("stroke", t.quantity("stroke", Dimension::length));
+    const toml::array* range = document["table"]["frequencies"].as_array();
+    t.accept("frequencies");
+    const std::string expected = "expected two frequencies, the table's lowest and highest, such as [\"0.5 Hz\", "
+                                 "\"20 Hz\"]";
+    if (!range || range->size() != 2) t.fail("frequencies", expected);
+    double bounds[2];
+    for (int i = 0; i < 2; ++i) {
+      const toml::node& n = *range->get(static_cast<std::size_t>(i));
+      std::string error;
+      std::optional<double> value;
+      if (auto text = n.value<std::string>()) value = parse_quantity(*text, Dimension::frequency, error);
+      else if (auto number = n.value<double>()) value = *number;
+      if (!value || !(*value > 0.0) || !std::isfinite(*value)) t.fail("frequencies", expected);
+      bounds[i] = *value;
+    }
+    if (!(bounds[0] < bounds[1])) t.fail("frequencies", expected + " (the lower first)");
+    limits.min_frequency = bounds[0];
+    limits.max_frequency = bounds[1];
+    t.reject_unknown_keys();
+    s.table = limits;
+  }
   root.reject_unknown_keys();
   return c;
 }

@@ -16,6 +16,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,20 @@
 
 namespace caskdem::diagnosis {
 
+// The shaking table's limits (specimen.toml [table]), which the tests `caskdem plan-test`
+// proposes respect (plan_test.h).
+//   [table]
+//   peak_acceleration = "1.0 g"
+//   peak_velocity = "0.6 m/s"
+//   stroke = "10 cm"              displacement amplitude (half the travel)
+//   frequencies = ["0.5 Hz", "20 Hz"]
+struct TableLimits {
+  double peak_acceleration = 0.0;  // m/s^2
+  double peak_velocity = 0.0;      // m/s
+  double stroke = 0.0;             // m
+  double min_frequency = 0.0, max_frequency = 0.0;  // Hz
+};
+
 struct DiagnosisSettings {
   std::vector<std::string> heldout;
   int starts = 8;
@@ -31,6 +46,7 @@ struct DiagnosisSettings {
   int exploration = 192;
   std::uint64_t seed = 1;
   int input_realisations = 1;
+  std::optional<TableLimits> table;  // absent: not stated
 };
 
 struct MeasuredSet {

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "caskdem/build_info.h"
+#include "diagnosis/plan_report.h"
 #include "io/hdf5_file.h"
 #include "io/run_output.h"
 
@@ -273,7 +274,7 @@ void write_calibration(const std::filesystem::path& directory, const MeasuredSet
 }
 
 void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& set, const Diagnosis& d,
-                     InstructionSet isa, bool plots) {
+                     InstructionSet isa, bool plots, const TestPlan* plan) {
   std::filesystem::create_directories(directory);
   nlohmann::json j;
   j["caskdem_version"] = build_info::version;
@@ -451,7 +452,9 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
     md << "\n";
   }
   md << "## Measured, baseline and extended histories\n\n![histories](histories.png)\n";
+  if (plan) md << "\n" << plan_markdown(*plan);
   md.close();
+  if (plan) write_plan(directory, *plan, plots);
 
   if (plots) {
     run_plot_script("plot_diagnosis.py", {(directory / "histories.h5").string(), (directory / "diagnosis.json").string(),

@@ -1,0 +1,145 @@
+#include "diagnosis/plan_report.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "caskdem/build_info.h"
+#include "io/hdf5_file.h"
+#include "io/run_output.h"
+
+namespace caskdem::diagnosis {
+
+namespace {
+
+std::string number(double v, int precision = 3) {
+  std::ostringstream out;
+  out << std::setprecision(precision) << v;
+  return out.str();
+}
+
+// A limit that is not limited reads as null in JSON.
+nlohmann::json limit(double v) { return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr); }
+
+// What a candidate predicts for a test, in the units the table operator reads.
+struct Predicted {
+  double peak_rotation = 0.0;  // rad
+  double max_sliding = 0.0;    // m
+};
+
+Predicted predicted_of(const SimulatedHistory& h) {
+  Predicted p;
+  for (double r : h.rotation) p.peak_rotation = std::max(p.peak_rotation, std::abs(r));
+  for (double s : h.slide) p.max_sliding = std::max(p.max_sliding, std::abs(s));
+  return p;
+}
+
+std::size_t shown(const TestPlan& plan) { return std::min<std::size_t>(kProposedTests, plan.tests.size()); }
+
+}  // namespace
+
+std::string plan_markdown(const TestPlan& plan) {
+  std::ostringstream md;
+  md << "## The test that would settle it\n\n";
+  if (plan.candidates.size() < 2) {
+    md << "Only the baseline is left standing (no mechanism has a profile likelihood ratio of at least 3.84 against "
+          "it): there is nothing for a further test to tell apart.\n";
+    return md.str();
+  }
+  md << "Candidates, at their fitted values (model scale, SI):\n\n";
+  for (const PlanCandidate& c : plan.candidates) md << "- " << c.name << "\n";
+  md << "\nTable limits: " << plan.limits_source << ".\n\n"
+     << plan.tests.size() << " feasible tests were simulated with every candidate. A test's separation is the "
+     << "smallest, over pairs of candidates, of the loss one would take were the other the truth, judged as the "
+     << "diagnosis judges a measured test (sensor noise at this set's levels, the test's predictability, each fit's "
+     << "standard errors): an expected log-likelihood ratio. Above 10.8 one such test decides between the closest "
+     << "pair at the 0.001 level; below 1 it cannot tell them apart.\n\n"
+     << "| rank | test | separation | closest pair |";
+  for (const PlanCandidate& c : plan.candidates) md << " " << c.name << ": peak rotation (rad), max sliding (mm) |";
+  md << "\n|---|---|---|---|";
+  for (std::size_t c = 0; c < plan.candidates.size(); ++c) md << "---|";
+  md << "\n";
+  for (std::size_t t = 0; t < shown(plan); ++t) {
+    const ProposedTest& p = plan.tests[t];
+    md << "| " << t + 1 << " | " << p.description << " | " << number(p.separation, 3) << " | " << p.closest_pair << " |";
+    for (const SimulatedHistory& h : p.predicted) {
+      const Predicted q = predicted_of(h);
+      md << " " << number(q.peak_rotation, 3) << ", " << number(1e3 * q.max_sliding, 3) << " |";
+    }
+    md << "\n";
+  }
+  if (!plan.tests.empty() && plan.tests.front().separation < 1.0) {
+    md << "\nNo feasible test separates the candidates beyond the noise: within these limits the table cannot tell "
+          "them apart; a wider table, or another kind of measurement, would be needed.\n";
+  }
+  md << "\n![predicted histories of the proposed tests](plan.png)\n";
+  return md.str();
+}
+
+void write_plan(const std::filesystem::path& directory, const TestPlan& plan, bool plots) {
+  std::filesystem::create_directories(directory);
+  nlohmann::json j;
+  j["caskdem_version"] = build_info::version;
+  j["table_limits"] = {{"peak_acceleration_m_s2", limit(plan.limits.peak_acceleration)},
+                       {"peak_velocity_m_s", limit(plan.limits.peak_velocity)},
+                       {"stroke_m", limit(plan.limits.stroke)},
+                       {"frequencies_hz", {plan.limits.min_frequency, plan.limits.max_frequency}},
+                       {"source", plan.limits_source}};
+  j["candidates"] = nlohmann::json::array();
+  for (const PlanCandidate& c : plan.candidates) {
+    nlohmann::json names = nlohmann::json::array();
+    for (Mechanism m : c.mechanisms) names.push_back(mechanism_name(m));
+    j["candidates"].push_back({{"name", c.name}, {"mechanisms", names}, {"point", c.point},
+                               {"standard_error", c.standard_error}});
+  }
+  j["separation"] = "min over candidate pairs of min(J_ab, J_ba): the loss b takes beyond a's own were a the truth "
+                    "(an expected log-likelihood ratio; 10.83 decides at the 0.001 level)";
+  j["tests"] = nlohmann::json::array();
+  for (const ProposedTest& p : plan.tests) {
+    nlohmann::json t = {{"kind", p.kind},
+                        {"description", p.description},
+                        {"peak_acceleration_m_s2", p.peak_acceleration},
+                        {"separation", p.separation},
+                        {"closest_pair", p.closest_pair},
+                        {"pair_loss", p.pair_loss}};
+    if (p.kind == "sine") t["frequency_hz"] = p.frequency;
+    if (p.kind == "record") t["scale"] = p.scale;
+    t["predicted"] = nlohmann::json::array();
+    for (const SimulatedHistory& h : p.predicted) {
+      const Predicted q = predicted_of(h);
+      t["predicted"].push_back({{"peak_rotation_rad", q.peak_rotation}, {"max_sliding_m", q.max_sliding}});
+    }
+    j["tests"].push_back(t);
+  }
+  j["wall_time_s"] = plan.wall_seconds;
+  std::ofstream(directory / "plan.json") << j.dump(2) << "\n";
+  std::ofstream(directory / "plan.md") << "# Proposed tests\n\n" << plan_markdown(plan);
+
+  {  // closed before the plot reads it
+    hdf5::Group root = hdf5::create_file(directory / "plan-histories.h5");
+    std::string names;
+    for (const PlanCandidate& c : plan.candidates) names += (names.empty() ? "" : ",") + c.name;
+    root.attribute("candidates", names);
+    for (std::size_t t = 0; t < shown(plan); ++t) {
+      const ProposedTest& p = plan.tests[t];
+      hdf5::Group g = root.group("rank" + std::to_string(t + 1));
+      g.attribute("description", p.description);
+      g.attribute("separation", p.separation);
+      g.write("time", p.input.time, "s");
+      g.write("table_acceleration", p.input.table_acceleration, "m/s^2");
+      for (std::size_t c = 0; c < plan.candidates.size(); ++c) {
+        g.write(plan.candidates[c].name + "_rotation", p.predicted[c].rotation, "rad");
+        g.write(plan.candidates[c].name + "_slide", p.predicted[c].slide, "m");
+      }
+    }
+  }
+  if (plots && shown(plan) > 0 && plan.candidates.size() > 1) {
+    run_plot_script("plot_plan.py", {(directory / "plan-histories.h5").string(), (directory / "plan.png").string()});
+  }
+}
+
+}  // namespace caskdem::diagnosis
