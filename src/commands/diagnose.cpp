@@ -38,14 +38,15 @@ void add_uncertainty_option(CLI::App* cmd, std::string& uncertainty, const std::
 }
 
 void print_adequacy(const diagnosis::Adequacy& a) {
-  std::cout << "adequate        " << (a.adequate ? "yes" : "no") << ": J " << std::setprecision(4) << a.statistic << " over "
-            << a.residuals << " residuals (RMS " << std::setprecision(3) << a.rms_residual << "), p = " << a.p_value
+  std::cout << "adequate        " << (a.adequate ? "yes" : "no") << ": J " << std::setprecision(4) << a.statistic
+            << " over " << a.residuals << " residuals (RMS " << std::setprecision(3) << a.rms_residual
+            << "), p = " << a.p_value
             << (a.global_fits ? " over every test (within noise)" : " over every test (beyond noise)") << "\n";
   for (const diagnosis::FamilyFit& f : a.families) {
     if (!f.misfits) continue;
     std::cout << "  misfitting family: " << f.family << ", J " << std::setprecision(4) << f.statistic << " over "
-              << f.residuals << " residuals, p = " << std::setprecision(3) << f.p_value << " (Holm level " << f.holm_level
-              << ")";
+              << f.residuals << " residuals, p = " << std::setprecision(3) << f.p_value << " (Holm level "
+              << f.holm_level << ")";
     if (f.magnitude_residuals > 0) {
       std::cout << "; " << (f.mean_magnitude_residual < 0.0 ? "under" : "over") << "-predicted by "
                 << std::abs(f.mean_magnitude_residual) << " tolerances on average";
@@ -141,7 +142,8 @@ void add_diagnose(CLI::App& app) {
       run_options.look_for_second_effect = !options->no_second_effect;
       const diagnosis::Diagnosis d = diagnosis::diagnose(set, run_options);
       std::optional<diagnosis::TestPlan> plan;
-      if (!options->no_plan) plan = diagnosis::plan_tests(set, d.specimen, diagnosis::leading_candidates(d), run_options);
+      if (!options->no_plan)
+        plan = diagnosis::plan_tests(set, d.specimen, diagnosis::leading_candidates(d), run_options);
       std::cout << "cause           " << d.cause << "\n";
       for (const diagnosis::FootprintScore& f : d.footprints) {
         std::cout << "footprint       " << std::left << std::setw(12) << f.footprint << " held-out error "
@@ -151,12 +153,14 @@ void add_diagnose(CLI::App& app) {
       print_adequacy(d.baseline.adequacy);
       if (!d.second_cause.empty()) std::cout << "second effect   " << d.second_cause << "\n";
       std::cout << std::left << std::setw(34) << "mechanism" << std::setw(15) << "held-out gain" << std::setw(12)
-                << "BIC delta" << std::setw(24) << "significant" << "profile likelihood ratio (p)\n";
+                << "BIC delta" << std::setw(24) << "significant"
+                << "profile likelihood ratio (p)\n";
       for (const diagnosis::CandidateScore& c : d.ranking) {
         std::cout << std::left << std::setw(34) << diagnosis::mechanism_name(c.mechanism) << std::setw(15)
                   << std::setprecision(3) << c.heldout_gain << std::setw(12) << c.bic_delta << std::setw(24)
                   << diagnosis::significance_text(c);
-        if (c.profile) std::cout << c.profile->likelihood_ratio << " (" << std::setprecision(2) << c.profile->p_value << ")";
+        if (c.profile)
+          std::cout << c.profile->likelihood_ratio << " (" << std::setprecision(2) << c.profile->p_value << ")";
         std::cout << "\n";
       }
       if (plan) print_plan(*plan);

@@ -10,9 +10,8 @@
 #include <iomanip>
 #include <iostream>
 #include <memory>
-#include <string>
-
 #include <nlohmann/json.hpp>
+#include <string>
 
 #include "commands/commands.h"
 #include "commands/validators.h"
@@ -30,7 +29,8 @@ namespace {
 diagnosis::PlanCandidate candidate_of(const nlohmann::json& fit, const std::string& name, const Case& specimen,
                                       bool vertical_measured, const std::filesystem::path& file) {
   const std::string model = fit.value("model", "");
-  const std::vector<diagnosis::Mechanism> mechanisms = diagnosis::parse_mechanism_list(model, file.string() + ": model");
+  const std::vector<diagnosis::Mechanism> mechanisms =
+      diagnosis::parse_mechanism_list(model, file.string() + ": model");
   const diagnosis::ModelVariant variant(specimen, mechanisms, vertical_measured);
   diagnosis::PlanCandidate c;
   c.name = name;
@@ -59,10 +59,12 @@ std::vector<diagnosis::PlanCandidate> candidates_from(const std::filesystem::pat
     throw InputError(located(file, 0, std::string("not JSON: ") + e.what()));
   }
   if (!j.contains("baseline") || !j.contains("ranking") || !j["ranking"].is_array()) {
-    throw InputError(located(file, 0, "expected the diagnosis.json of `caskdem diagnose` (a \"baseline\" and a "
-                                      "\"ranking\")"));
+    throw InputError(located(file, 0,
+                             "expected the diagnosis.json of `caskdem diagnose` (a \"baseline\" and a "
+                             "\"ranking\")"));
   }
-  std::vector<diagnosis::PlanCandidate> out = {candidate_of(j["baseline"], "baseline", specimen, vertical_measured, file)};
+  std::vector<diagnosis::PlanCandidate> out = {
+      candidate_of(j["baseline"], "baseline", specimen, vertical_measured, file)};
   const std::string cause = j.value("cause", "");
   std::vector<std::pair<double, const nlohmann::json*>> supported;
   for (const nlohmann::json& r : j["ranking"]) {
@@ -109,10 +111,11 @@ void add_plan_test(CLI::App& app) {
     bool quiet = false, no_plot = false;
   };
   auto options = std::make_shared<Options>();
-  CLI::App* cmd = app.add_subcommand(
-      "plan-test", "The shaking-table tests that would tell a diagnosis's leading candidates apart");
+  CLI::App* cmd =
+      app.add_subcommand("plan-test", "The shaking-table tests that would tell a diagnosis's leading candidates apart");
   cmd->add_option("directory", options->directory, "Measured-data directory (specimen.toml and CSV files)")->required();
-  cmd->add_option("--from", options->from, "The diagnosis.json to take the candidates from (default DIRECTORY/diagnosis/diagnosis.json)");
+  cmd->add_option("--from", options->from,
+                  "The diagnosis.json to take the candidates from (default DIRECTORY/diagnosis/diagnosis.json)");
   cmd->add_option("--out", options->out, "Output directory (default DIRECTORY/plan)");
   cmd->add_option("--candidates", options->candidates, "Most candidates to tell apart, the baseline included")
       ->check(CLI::Range(2, 9))
@@ -131,9 +134,11 @@ void add_plan_test(CLI::App& app) {
     {
       std::ifstream in(from);
       const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-      if (!j.is_discarded() && j.contains("footprint") && j["footprint"].is_string() && diagnosis::footprint_of(specimen)) {
+      if (!j.is_discarded() && j.contains("footprint") && j["footprint"].is_string() &&
+          diagnosis::footprint_of(specimen)) {
         for (diagnosis::Footprint f : diagnosis::all_footprints()) {
-          if (diagnosis::footprint_name(f) == j["footprint"].get<std::string>()) specimen = diagnosis::with_footprint(specimen, f);
+          if (diagnosis::footprint_name(f) == j["footprint"].get<std::string>())
+            specimen = diagnosis::with_footprint(specimen, f);
         }
       }
     }

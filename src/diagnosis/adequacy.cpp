@@ -23,23 +23,23 @@ const std::vector<MeasureFamily>& measure_families() {
   // timing set the rocking's rhythm and phase; an off-axis mass or a curved base tilt it to
   // one side (mechanisms.h).
   static const std::vector<MeasureFamily> families = {
-      {"sliding", "how far the cask slides",
+      {"sliding",
+       "how far the cask slides",
        {"max_sliding", "residual_sliding", "sliding_history"},
        {"max_sliding"},
        {"velocity_dependent_friction", "vertical_excitation", "floor_compliance"}},
-      {"rocking_amplitude", "how high and how long the cask rocks",
+      {"rocking_amplitude",
+       "how high and how long the cask rocks",
        {"peak_rotation", "rms_rotation", "rocking_duration"},
        {"peak_rotation", "rms_rotation", "rocking_duration"},
        {"amplitude_dependent_restitution", "out_of_plane_loss", "vertical_excitation", "floor_compliance",
         "base_imperfection"}},
-      {"rocking_timing", "the rocking's rhythm and phase",
+      {"rocking_timing",
+       "the rocking's rhythm and phase",
        {"rocking_rate", "rotation_history", "rotation_lag"},
        {"rocking_rate"},
        {"sensor_delay", "base_imperfection", "floor_compliance"}},
-      {"asymmetry", "rocking further to one side",
-       {"rotation_asymmetry"},
-       {},
-       {"eccentric_mass", "base_imperfection"}},
+      {"asymmetry", "rocking further to one side", {"rotation_asymmetry"}, {}, {"eccentric_mass", "base_imperfection"}},
   };
   return families;
 }
@@ -72,7 +72,8 @@ std::vector<FamilyFit> judge_families(const std::vector<std::vector<double>>& re
   // the first that passes; ties keep the families' order, so the verdict is deterministic.
   std::vector<std::size_t> order(fits.size());
   for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
-  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return fits[a].p_value < fits[b].p_value; });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](std::size_t a, std::size_t b) { return fits[a].p_value < fits[b].p_value; });
   bool rejecting = true;
   for (std::size_t k = 0; k < order.size(); ++k) {
     FamilyFit& f = fits[order[k]];
@@ -177,8 +178,8 @@ Adequacy judge_adequacy(const MeasuredSet& set, const std::vector<Parameter>& pa
       if (family.name != f.family) continue;
       std::string mechanisms;
       for (const std::string& m : family.mechanisms) mechanisms += (mechanisms.empty() ? "" : ", ") + m;
-      add_check(a.checks, family.what + " misfits (" + family.name + "): the mechanisms that act on it are " +
-                              mechanisms);
+      add_check(a.checks,
+                family.what + " misfits (" + family.name + "): the mechanisms that act on it are " + mechanisms);
     }
   }
   a.adequate = a.fits_within_noise && a.implausible.empty();

@@ -58,7 +58,7 @@ struct Misfit {
 // act on it: where a family misfits, these are the candidates.
 struct MeasureFamily {
   std::string name;
-  std::string what;                     // in words, for the report
+  std::string what;  // in words, for the report
   std::vector<std::string> measures;
   std::vector<std::string> magnitudes;  // its measures whose sign says over- (+) or under-prediction (-)
   std::vector<std::string> mechanisms;
@@ -68,10 +68,10 @@ const std::vector<MeasureFamily>& measure_families();
 // One family's goodness of fit.
 struct FamilyFit {
   std::string family;
-  double statistic = 0.0;       // J_f: the robust loss of its residuals over every test
-  int residuals = 0;            // N_f
-  double p_value = 1.0;         // P(chi2_{N_f} >= J_f)
-  double holm_level = 0.0;      // the level Holm's step-down compared it with
+  double statistic = 0.0;   // J_f: the robust loss of its residuals over every test
+  int residuals = 0;        // N_f
+  double p_value = 1.0;     // P(chi2_{N_f} >= J_f)
+  double holm_level = 0.0;  // the level Holm's step-down compared it with
   bool misfits = false;
   double mean_magnitude_residual = 0.0;  // mean signed residual of its magnitude measures (< 0: under-predicted)
   int magnitude_residuals = 0;
@@ -91,8 +91,8 @@ struct Adequacy {
   double p_value = 1.0;          // P(chi2_{N-k} >= statistic)
   double rms_residual = 0.0;     // sqrt(J / N)
   bool global_fits = true;       // p_value >= kAdequacyLevel
-  std::vector<FamilyFit> families;                // in measure_families() order
-  std::vector<std::string> misfitting_families;   // rejected by Holm's step-down
+  std::vector<FamilyFit> families;               // in measure_families() order
+  std::vector<std::string> misfitting_families;  // rejected by Holm's step-down
   std::vector<std::string> misfitting_tests;  // each test's own p-value below kAdequacyLevel / tests
   std::vector<Misfit> misfits;                // |r| > kMisfitResidual
   std::vector<ImplausibleValue> implausible;

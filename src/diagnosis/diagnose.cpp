@@ -10,178 +10,12 @@
 #include <utility>
 
 #include "diagnosis/footprint.h"
+#include "diagnosis/judging.h"
 #include "diagnosis/residual_structure.h"
 
 namespace caskdem::diagnosis {
 
 namespace {
-
-// The tolerances every model of a diagnosis is judged by: from the measurements, widened by
-// each test's own predictability around the specimen's nominal parameters.
-constexpr int kPredictabilityRealisations = 8;
-
-// A training test is predictable when predictability widened its tolerances by at most this
-// factor (geometric mean over its measures): a sine whose response follows its input, not a
-// chaotic earthquake test.
-constexpr double kPredictableWidening = 2.0;
-
-// Draws of a fit's parameters whose spread widens its held-out tests' tolerances
-// (predictability.cpp, add_fit_spread).
-constexpr int kFitSpreadDraws = 16;
-
-// What every model of a diagnosis is judged by: each test's tolerances and the table inputs it
-// is simulated with (the measured channel, then noisy copies; measures.h, marginal_loss).
-struct Yardstick {
-  std::vector<TestReference> references;          // per test
-  std::vector<std::vector<MeasuredTest>> inputs;  // per test, per input realisation
-  std::vector<int> predictable_training;          // the training tests that are predictable
-};
-
-Yardstick yardstick_of(const MeasuredSet& set, const DiagnosisOptions& options) {
-  const ModelVariant baseline(set.specimen, {}, set.vertical_measured);
-  Yardstick y;
-  for (std::size_t t = 0; t < set.tests.size(); ++t) {
-    y.references.push_back(reference_of(set.tests[t], baseline.model().stability_angle));
-    y.inputs.push_back(input_realisations(set.tests[t], t, set.settings.input_realisations, set.settings.seed));
-  }
-  std::vector<std::vector<double>> measurement_tolerance;
-  for (const TestReference& r : y.references) measurement_tolerance.push_back(r.tolerance);
-  add_predictability(y.references, set.tests, baseline, baseline.reference(), kPredictabilityRealisations,
-                     set.settings.seed, options.threads);
-  for (int t : set.training) {
-    const std::vector<double>& widened = y.references[t].tolerance;
-    double log_widening = 0.0;
-    for (std::size_t m = 0; m < widened.size(); ++m) log_widening += std::log(widened[m] / measurement_tolerance[t][m]);
-    if (log_widening / double(widened.size()) <= std::log(kPredictableWidening)) y.predictable_training.push_back(t);
-  }
-  return y;
-}
-
-// Every test's loss and residuals at one point. The residuals are those of the input
-// realisation whose response lands nearest the measured one (the measured channel's, R = 1).
-struct Judged {
-  std::vector<double> loss;                    // per test
-  std::vector<std::vector<double>> residuals;  // per test, per measure
-  std::vector<std::vector<double>> heldout_tolerance;  // per test, per measure (judge_at; held-out tests only)
-};
-
-// J for every point over the given tests; each (test, input realisation) runs as one block of
-// lanes, in parallel.
-std::vector<double> objective_over(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant,
-                                   const std::vector<int>& tests, const std::vector<std::vector<double>>& points,
-                                   const DiagnosisOptions& options, Judged* first_point = nullptr) {
-  const int threads = options.threads > 0 ? options.threads : omp_get_max_threads();
-  // Every test has as many inputs as the yardstick made for it (input_realisations).
-  const std::size_t inputs = yardstick.inputs.front().size();
-  const std::size_t runs = tests.size() * inputs;
-  std::vector<std::vector<double>> loss(runs, std::vector<double>(points.size(), 0.0));
-  std::vector<std::vector<double>> first_residuals(runs);
-  std::exception_ptr failure;
-#pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
-  for (std::size_t i = 0; i < runs; ++i) {
-    try {
-      const int t = tests[i / inputs];
-      const MeasuredTest& input = yardstick.inputs[t][i % inputs];
-      const std::vector<SimulatedHistory> histories = simulate_test(variant, input, points, options.isa);
-      for (std::size_t p = 0; p < points.size(); ++p) {
-        // Judged against the measured test (its response channels), whatever the input.
-        const std::vector<double> r = residuals(set.tests[t], yardstick.references[t],
-                                                delayed(histories[p], input.time, variant.sensor_delay(points[p])));
-        loss[i][p] = robust_loss(r);
-        if (first_point && p == 0) first_residuals[i] = r;
-      }
-    } catch (...) {
-#pragma omp critical
-      failure = std::current_exception();
-    }
-  }
-  if (failure) std::rethrow_exception(failure);
-  if (first_point) {
-    first_point->loss.assign(set.tests.size(), 0.0);
-    first_point->residuals.assign(set.tests.size(), {});
-  }
-  // Summed over tests in a fixed order, whatever the threads.
-  std::vector<double> total(points.size(), 0.0);
-  std::vector<double> per_input(inputs);
-  for (std::size_t k = 0; k < tests.size(); ++k) {
-    for (std::size_t p = 0; p < points.size(); ++p) {
-      for (std::size_t r = 0; r < inputs; ++r) per_input[r] = loss[k * inputs + r][p];
-      const double test_loss = marginal_loss(per_input);  // the input's own loss when R = 1
-      total[p] += test_loss;
-      if (first_point && p == 0) {
-        const auto nearest = std::min_element(per_input.begin(), per_input.end()) - per_input.begin();
-        first_point->loss[tests[k]] = test_loss;
-        first_point->residuals[tests[k]] = first_residuals[k * inputs + nearest];
-      }
-    }
-  }
-  return total;
-}
-
-// The scaled residuals that the losses of some tests sum: every compared measure of each.
-int residual_count(const Yardstick& yardstick, const std::vector<int>& tests) {
-  std::size_t count = 0;
-  for (int t : tests) count += compared_count(yardstick.references[t]);
-  return static_cast<int>(count);
-}
-
-// The error over some tests: sqrt of the mean loss per residual (the RMS of the residuals where
-// they are within a few tolerances).
-double error_of(const std::vector<double>& loss, const Yardstick& yardstick, const std::vector<int>& tests) {
-  double sum = 0.0;
-  for (int t : tests) sum += loss[t];
-  const int count = residual_count(yardstick, tests);
-  return count > 0 ? std::sqrt(sum / double(count)) : 0.0;
-}
-
-// Every test's loss and residuals at one point (the tests in parallel). The held-out tests are
-// judged as predictions: with the standard errors of the fit the point comes from, their
-// tolerances also allow the spread of the model's prediction over those errors (none given:
-// the point alone).
-Judged judge_at(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant,
-                const std::vector<double>& point, const std::vector<double>& standard_error,
-                const DiagnosisOptions& options) {
-  // Every test as the fits see it, but the held-out ones when they are judged as predictions.
-  std::vector<int> as_fitted;
-  for (std::size_t t = 0; t < set.tests.size(); ++t) {
-    if (standard_error.empty() || !set.is_heldout(t)) as_fitted.push_back(static_cast<int>(t));
-  }
-  Judged judged;
-  (void)objective_over(set, yardstick, variant, as_fitted, {point}, options, &judged);
-  judged.heldout_tolerance.assign(set.tests.size(), {});
-  for (int t : set.heldout) judged.heldout_tolerance[t] = yardstick.references[t].tolerance;
-  if (!standard_error.empty()) {
-    Yardstick predictive = yardstick;
-    add_fit_spread(predictive.references, set.tests, set.heldout, variant, point, standard_error, kFitSpreadDraws,
-                   set.settings.seed, options.threads);
-    Judged heldout;
-    (void)objective_over(set, predictive, variant, set.heldout, {point}, options, &heldout);
-    for (int t : set.heldout) {
-      judged.loss[t] = heldout.loss[t];
-      judged.residuals[t] = std::move(heldout.residuals[t]);
-      judged.heldout_tolerance[t] = predictive.references[t].tolerance;
-    }
-  }
-  return judged;
-}
-
-// Information criteria of a fit with loss J over n residuals and k parameters (diagnose.h).
-double bic_of(double j, double n, std::size_t k) {
-  return n * std::log(std::max(j, 1e-300) / n) + static_cast<double>(k) * std::log(n);
-}
-double aic_of(double j, double n, std::size_t k) {
-  return n * std::log(std::max(j, 1e-300) / n) + 2.0 * static_cast<double>(k);
-}
-
-// The search effort the data set's [diagnosis] table asks for.
-FitOptions fit_options_of(const MeasuredSet& set) {
-  FitOptions o;
-  o.starts = set.settings.starts;
-  o.evaluations = set.settings.evaluations;
-  o.exploration = set.settings.exploration;
-  o.seed = set.settings.seed;
-  return o;
-}
 
 Adequacy adequacy_of(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant, const ModelFit& m,
                      const DiagnosisOptions& options) {
@@ -402,9 +236,9 @@ ModelFit fit_baseline(const MeasuredSet& set, const Yardstick& yardstick, const 
 // only when it predicts them by at least minimum_gain better: the analyst's rule stands unless
 // the data speak against it.
 struct FootprintChoice {
-  std::vector<MeasuredSet> sets;     // the data on each rule tried
+  std::vector<MeasuredSet> sets;  // the data on each rule tried
   std::vector<Yardstick> yardsticks;
-  std::vector<ModelFit> fits;        // the baseline calibrated on each
+  std::vector<ModelFit> fits;  // the baseline calibrated on each
   std::vector<Footprint> tried;
   std::size_t stated = 0, chosen = 0;
   std::vector<FootprintScore> scores;
@@ -464,7 +298,8 @@ FootprintChoice choose_footprint(const MeasuredSet& given, const DiagnosisOption
   choice.chosen = choice.stated;
   for (std::size_t i = 0; i < choice.scores.size(); ++i) {
     const FootprintScore& score = choice.scores[i];
-    if (score.heldout_gain >= options.minimum_gain && score.heldout_error < choice.scores[choice.chosen].heldout_error) {
+    if (score.heldout_gain >= options.minimum_gain &&
+        score.heldout_error < choice.scores[choice.chosen].heldout_error) {
       choice.chosen = i;
     }
   }
@@ -599,8 +434,9 @@ SecondEffectSearch search_second_effect(const MeasuredSet& set, const Yardstick&
 }
 
 // Each mechanism's profile (profile.h) from the baseline as refined, after every fit: a fit
-// that ended above its profile's minimum is repeated from it, so that a value of the mechanism
-// that lowers J is not missed. The profile's off point is the baseline searched again; where
+// that ended above its profile's minimum, where that minimum is below the baseline's J by the
+// profile's bound, is repeated from it, so that a value of the mechanism that lowers J is not
+// missed. The profile's off point is the baseline searched again; where
 // that, or a profile's baseline values, fits better, the baseline is refitted from them first,
 // as from the candidates' (a mechanism must not gain by a better fit of the baseline alone).
 void profile_candidates(const MeasuredSet& set, const Yardstick& yardstick, Diagnosis& d,
@@ -638,7 +474,13 @@ void profile_candidates(const MeasuredSet& set, const Yardstick& yardstick, Diag
   }
   for (CandidateScore& c : d.ranking) {
     const ProfilePoint& lowest = c.profile->grid[c.profile->minimum];
-    if (lowest.objective >= c.model.fit.objective) continue;
+    // Only where the profile finds the mechanism lowering J below its fit, and below the
+    // baseline's by the profile's own bound (the data's support for it, chi2_1 at 95 %): a fit
+    // that ends above the baseline is the baseline anyway (switched_off), and one within noise
+    // of it cannot pass the information criterion.
+    if (lowest.objective >= c.model.fit.objective || lowest.objective >= d.baseline.fit.objective - kProfileBound) {
+      continue;
+    }
     const ModelVariant variant(set.specimen, {c.mechanism}, set.vertical_measured);
     say(options, "refitting " + variant.name() + " from its profile's minimum (J " + std::to_string(lowest.objective) +
                      " against its fit's " + std::to_string(c.model.fit.objective) + ")");

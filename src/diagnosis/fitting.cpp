@@ -345,9 +345,10 @@ FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<
   return result;
 }
 
-std::vector<SearchEnd> search_from_each(const std::vector<Parameter>& space, const std::vector<std::vector<double>>& starts,
-                                        const std::vector<bool>& free, const PopulationObjective& objective,
-                                        int evaluations, double initial_step, FitResult& tally) {
+std::vector<SearchEnd> search_from_each(const std::vector<Parameter>& space,
+                                        const std::vector<std::vector<double>>& starts, const std::vector<bool>& free,
+                                        const PopulationObjective& objective, int evaluations, double initial_step,
+                                        FitResult& tally) {
   const std::size_t n = space.size();
   std::vector<std::size_t> moving;
   for (std::size_t i = 0; i < n; ++i) {

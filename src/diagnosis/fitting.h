@@ -85,9 +85,10 @@ struct SearchEnd {
   std::vector<double> best;  // physical values
   double objective = 0.0;
 };
-std::vector<SearchEnd> search_from_each(const std::vector<Parameter>& space, const std::vector<std::vector<double>>& starts,
-                                        const std::vector<bool>& free, const PopulationObjective& objective,
-                                        int evaluations, double initial_step, FitResult& tally);
+std::vector<SearchEnd> search_from_each(const std::vector<Parameter>& space,
+                                        const std::vector<std::vector<double>>& starts, const std::vector<bool>& free,
+                                        const PopulationObjective& objective, int evaluations, double initial_step,
+                                        FitResult& tally);
 
 double to_unit(const Parameter& p, double value);
 double from_unit(const Parameter& p, double unit);

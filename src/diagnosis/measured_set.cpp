@@ -78,21 +78,25 @@ Case read_specimen(const std::filesystem::path& specimen, DiagnosisSettings* set
   if (root.has_table("table")) {
     TableReader t = root.table("table");
     TableLimits limits;
-    limits.peak_acceleration = t.positive("peak_acceleration", t.quantity("peak_acceleration", Dimension::acceleration));
+    limits.peak_acceleration =
+        t.positive("peak_acceleration", t.quantity("peak_acceleration", Dimension::acceleration));
     limits.peak_velocity = t.positive("peak_velocity", t.quantity("peak_velocity", Dimension::velocity));
     limits.stroke = t.positive("stroke", t.quantity("stroke", Dimension::length));
     const toml::array* range = document["table"]["frequencies"].as_array();
     t.accept("frequencies");
-    const std::string expected = "expected two frequencies, the table's lowest and highest, such as [\"0.5 Hz\", "
-                                 "\"20 Hz\"]";
+    const std::string expected =
+        "expected two frequencies, the table's lowest and highest, such as [\"0.5 Hz\", "
+        "\"20 Hz\"]";
     if (!range || range->size() != 2) t.fail("frequencies", expected);
     double bounds[2];
     for (int i = 0; i < 2; ++i) {
       const toml::node& n = *range->get(static_cast<std::size_t>(i));
       std::string error;
       std::optional<double> value;
-      if (auto text = n.value<std::string>()) value = parse_quantity(*text, Dimension::frequency, error);
-      else if (auto number = n.value<double>()) value = *number;
+      if (auto text = n.value<std::string>())
+        value = parse_quantity(*text, Dimension::frequency, error);
+      else if (auto number = n.value<double>())
+        value = *number;
       if (!value || !(*value > 0.0) || !std::isfinite(*value)) t.fail("frequencies", expected);
       bounds[i] = *value;
     }

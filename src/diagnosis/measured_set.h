@@ -33,9 +33,9 @@ namespace caskdem::diagnosis {
 //   stroke = "10 cm"              displacement amplitude (half the travel)
 //   frequencies = ["0.5 Hz", "20 Hz"]
 struct TableLimits {
-  double peak_acceleration = 0.0;  // m/s^2
-  double peak_velocity = 0.0;      // m/s
-  double stroke = 0.0;             // m
+  double peak_acceleration = 0.0;                   // m/s^2
+  double peak_velocity = 0.0;                       // m/s
+  double stroke = 0.0;                              // m
   double min_frequency = 0.0, max_frequency = 0.0;  // Hz
 };
 

@@ -4,9 +4,8 @@
 #include <cmath>
 #include <fstream>
 #include <iomanip>
-#include <sstream>
-
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "caskdem/build_info.h"
 #include "io/hdf5_file.h"
@@ -65,7 +64,8 @@ std::string plan_markdown(const TestPlan& plan) {
   md << "\n";
   for (std::size_t t = 0; t < shown(plan); ++t) {
     const ProposedTest& p = plan.tests[t];
-    md << "| " << t + 1 << " | " << p.description << " | " << number(p.separation, 3) << " | " << p.closest_pair << " |";
+    md << "| " << t + 1 << " | " << p.description << " | " << number(p.separation, 3) << " | " << p.closest_pair
+       << " |";
     for (const SimulatedHistory& h : p.predicted) {
       const Predicted q = predicted_of(h);
       md << " " << number(q.peak_rotation, 3) << ", " << number(1e3 * q.max_sliding, 3) << " |";
@@ -93,11 +93,12 @@ void write_plan(const std::filesystem::path& directory, const TestPlan& plan, bo
   for (const PlanCandidate& c : plan.candidates) {
     nlohmann::json names = nlohmann::json::array();
     for (Mechanism m : c.mechanisms) names.push_back(mechanism_name(m));
-    j["candidates"].push_back({{"name", c.name}, {"mechanisms", names}, {"point", c.point},
-                               {"standard_error", c.standard_error}});
+    j["candidates"].push_back(
+        {{"name", c.name}, {"mechanisms", names}, {"point", c.point}, {"standard_error", c.standard_error}});
   }
-  j["separation"] = "min over candidate pairs of min(J_ab, J_ba): the loss b takes beyond a's own were a the truth "
-                    "(an expected log-likelihood ratio; 10.83 decides at the 0.001 level)";
+  j["separation"] =
+      "min over candidate pairs of min(J_ab, J_ba): the loss b takes beyond a's own were a the truth "
+      "(an expected log-likelihood ratio; 10.83 decides at the 0.001 level)";
   j["tests"] = nlohmann::json::array();
   for (const ProposedTest& p : plan.tests) {
     nlohmann::json t = {{"kind", p.kind},

@@ -101,8 +101,8 @@ MeasuredTest input_of(const std::string& name, const std::vector<double>& accele
   t.time_step = noise.time_step;
   for (std::size_t k = 0; k < acceleration.size(); ++k) {
     t.time.push_back(double(k) * noise.time_step);
-    t.table_acceleration.push_back(
-        acceleration[k] + noise.table * philox_normal(seed, {static_cast<std::uint32_t>(k), index, 0, kTableNoiseStream}));
+    t.table_acceleration.push_back(acceleration[k] + noise.table * philox_normal(seed, {static_cast<std::uint32_t>(k),
+                                                                                        index, 0, kTableNoiseStream}));
   }
   if (vertical) {  // the table does not move vertically in a planned test: the channel reads zero
     t.has_vertical = true;
@@ -125,7 +125,8 @@ std::vector<ProposedTest> feasible_tests(const MeasuredSet& set, const TableLimi
                      std::pow(limits.max_frequency / limits.min_frequency, double(i) / double(kFrequencies - 1));
     const double omega = 2.0 * std::numbers::pi * f;
     // The largest amplitude the table reaches at f: acceleration, velocity or stroke limits it.
-    const double largest = std::min({limits.peak_acceleration, limits.peak_velocity * omega, limits.stroke * omega * omega});
+    const double largest =
+        std::min({limits.peak_acceleration, limits.peak_velocity * omega, limits.stroke * omega * omega});
     const double cycles = std::max(3.0, std::round(f * kHoldSeconds)) + 2.0;
     for (double fraction : kAmplitudeFractions) {
       const double target = fraction * largest;
@@ -135,9 +136,9 @@ std::vector<ProposedTest> feasible_tests(const MeasuredSet& set, const TableLimi
       for (double time = 0.0; time <= motion->duration(); time += dt) {
         displacement = std::max(displacement, std::abs(motion->displacement(time)));
       }
-      const double over = std::max({motion::peak_acceleration(*motion, dt) / limits.peak_acceleration,
-                                    motion::peak_velocity(*motion, dt) / limits.peak_velocity,
-                                    displacement / limits.stroke, 1.0});
+      const double over =
+          std::max({motion::peak_acceleration(*motion, dt) / limits.peak_acceleration,
+                    motion::peak_velocity(*motion, dt) / limits.peak_velocity, displacement / limits.stroke, 1.0});
       motion = motion::make_sine(target / (omega * omega) / over, f, cycles, 1.0);
       const int steps = static_cast<int>(std::ceil((motion->duration() + kFreeSeconds) / dt)) + 1;
       std::vector<double> a(steps);
@@ -156,7 +157,8 @@ std::vector<ProposedTest> feasible_tests(const MeasuredSet& set, const TableLimi
         << p.peak_acceleration / units::standard_gravity << " g), " << p.peak_velocity << " m/s, "
         << 1e3 * p.peak_displacement << " mm; " << cycles << " cycles with one-cycle ramps";
       p.description = d.str();
-      p.input = input_of("plan-sine-" + std::to_string(index), a, noise, set.vertical_measured, set.settings.seed, index);
+      p.input =
+          input_of("plan-sine-" + std::to_string(index), a, noise, set.vertical_measured, set.settings.seed, index);
       ++index;
       tests.push_back(std::move(p));
     }
@@ -171,7 +173,8 @@ std::vector<ProposedTest> feasible_tests(const MeasuredSet& set, const TableLimi
       // The measured record, resampled to the plan's step by its nearest sample, then a rest.
       const double length = t.duration();
       for (double time = 0.0; time <= length + kFreeSeconds; time += dt) {
-        const std::size_t k = std::min(t.table_acceleration.size() - 1, static_cast<std::size_t>(std::lround(time / t.time_step)));
+        const std::size_t k =
+            std::min(t.table_acceleration.size() - 1, static_cast<std::size_t>(std::lround(time / t.time_step)));
         const double value = time <= length && std::isfinite(t.table_acceleration[k]) ? t.table_acceleration[k] : 0.0;
         a.push_back(scale * value);
       }
@@ -184,7 +187,8 @@ std::vector<ProposedTest> feasible_tests(const MeasuredSet& set, const TableLimi
       d << t.name << "'s table record scaled by " << scale << ", peak " << p.peak_acceleration << " m/s^2 ("
         << p.peak_acceleration / units::standard_gravity << " g)";
       p.description = d.str();
-      p.input = input_of("plan-record-" + std::to_string(index), a, noise, set.vertical_measured, set.settings.seed, index);
+      p.input =
+          input_of("plan-record-" + std::to_string(index), a, noise, set.vertical_measured, set.settings.seed, index);
       ++index;
       tests.push_back(std::move(p));
     }
@@ -228,6 +232,11 @@ TestPlan plan_tests(const MeasuredSet& set, const Case& specimen, const std::vec
   plan.limits = limits_of(set, plan.limits_source);
   const SetNoise noise = noise_of(set);
   plan.tests = feasible_tests(set, plan.limits, noise);
+  if (candidates.size() < 2) {  // nothing to tell apart
+    plan.tests.clear();
+    plan.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return plan;
+  }
   const std::size_t n = candidates.size(), tests = plan.tests.size();
   std::vector<MeasuredTest> inputs;
   for (const ProposedTest& p : plan.tests) inputs.push_back(p.input);
@@ -249,28 +258,28 @@ TestPlan plan_tests(const MeasuredSet& set, const Case& specimen, const std::vec
 #pragma omp parallel for schedule(dynamic, 1) num_threads(threads)
     for (std::size_t t = 0; t < tests; ++t) {
       try {
-      SimulatedHistory h = simulate_test(variant, inputs[t], {candidates[c].point}, options.isa)[0];
-      h = delayed(h, inputs[t].time, variant.sensor_delay(candidates[c].point));
-      // The tolerances a measurement of a's response would have (its channels carrying the
-      // set's sensor noise); the differences those of the predictions themselves, noise-free,
-      // so that identical predictions cost nothing.
-      MeasuredTest m = inputs[t];
-      m.rotation = h.rotation;
-      m.slide = h.slide;
-      MeasuredTest noisy = m;
-      for (std::size_t k = 0; k < m.time.size(); ++k) {
-        const auto words = [&](std::uint32_t channel) {
-          return std::array<std::uint32_t, 4>{static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(t),
-                                              static_cast<std::uint32_t>(c) * 2 + channel, kSensorNoiseStream};
-        };
-        noisy.rotation[k] += noise.rotation * philox_normal(set.settings.seed, words(0));
-        noisy.slide[k] += noise.slide * philox_normal(set.settings.seed, words(1));
-      }
-      TestReference r = reference_of(noisy, variant.model().stability_angle);
-      r.measured = features_of(m.time, m.rotation, m.slide, nullptr, nullptr, r.rocking_threshold);
-      references[c][t] = r;
-      measured[c][t] = std::move(m);
-      predicted[c][t] = std::move(h);
+        SimulatedHistory h = simulate_test(variant, inputs[t], {candidates[c].point}, options.isa)[0];
+        h = delayed(h, inputs[t].time, variant.sensor_delay(candidates[c].point));
+        // The tolerances a measurement of a's response would have (its channels carrying the
+        // set's sensor noise); the differences those of the predictions themselves, noise-free,
+        // so that identical predictions cost nothing.
+        MeasuredTest m = inputs[t];
+        m.rotation = h.rotation;
+        m.slide = h.slide;
+        MeasuredTest noisy = m;
+        for (std::size_t k = 0; k < m.time.size(); ++k) {
+          const auto words = [&](std::uint32_t channel) {
+            return std::array<std::uint32_t, 4>{static_cast<std::uint32_t>(k), static_cast<std::uint32_t>(t),
+                                                static_cast<std::uint32_t>(c) * 2 + channel, kSensorNoiseStream};
+          };
+          noisy.rotation[k] += noise.rotation * philox_normal(set.settings.seed, words(0));
+          noisy.slide[k] += noise.slide * philox_normal(set.settings.seed, words(1));
+        }
+        TestReference r = reference_of(noisy, variant.model().stability_angle);
+        r.measured = features_of(m.time, m.rotation, m.slide, nullptr, nullptr, r.rocking_threshold);
+        references[c][t] = r;
+        measured[c][t] = std::move(m);
+        predicted[c][t] = std::move(h);
       } catch (...) {
 #pragma omp critical
         failure = std::current_exception();

@@ -38,16 +38,16 @@ struct PlanCandidate {
 };
 
 struct ProposedTest {
-  std::string kind;         // "sine" or "record"
-  std::string description;  // what to run, in the table operator's terms
-  double frequency = 0.0;   // Hz (sines)
-  double peak_acceleration = 0.0;  // m/s^2
-  double peak_velocity = 0.0;      // m/s (sines)
-  double peak_displacement = 0.0;  // m (sines)
-  double scale = 0.0;       // of the record (records)
-  MeasuredTest input;       // time and table acceleration (with the set's table noise)
+  std::string kind;                            // "sine" or "record"
+  std::string description;                     // what to run, in the table operator's terms
+  double frequency = 0.0;                      // Hz (sines)
+  double peak_acceleration = 0.0;              // m/s^2
+  double peak_velocity = 0.0;                  // m/s (sines)
+  double peak_displacement = 0.0;              // m (sines)
+  double scale = 0.0;                          // of the record (records)
+  MeasuredTest input;                          // time and table acceleration (with the set's table noise)
   std::vector<std::vector<double>> pair_loss;  // J_ab, [a][b] (0 on the diagonal)
-  double separation = 0.0;  // min over pairs of min(J_ab, J_ba)
+  double separation = 0.0;                     // min over pairs of min(J_ab, J_ba)
   std::string closest_pair;
   std::vector<SimulatedHistory> predicted;  // per candidate, at its fitted values
 };
@@ -56,7 +56,7 @@ struct TestPlan {
   std::vector<PlanCandidate> candidates;
   TableLimits limits;
   std::string limits_source;        // "specimen.toml [table]" or how they were taken from the tests
-  std::vector<ProposedTest> tests;  // every feasible test tried, best first
+  std::vector<ProposedTest> tests;  // every feasible test tried, best first (none with fewer than two candidates)
   double wall_seconds = 0.0;
 };
 

@@ -114,7 +114,8 @@ Profile profile_mechanism(const ModelVariant& variant, const std::vector<std::ve
   for (const std::vector<double>& b : baselines) baseline_starts.emplace_back(b.begin(), b.begin() + first);
   for (const std::vector<double>& x : fitted) {
     std::vector<double> b(x.begin(), x.begin() + first);
-    if (std::find(baseline_starts.begin(), baseline_starts.end(), b) == baseline_starts.end()) baseline_starts.push_back(b);
+    if (std::find(baseline_starts.begin(), baseline_starts.end(), b) == baseline_starts.end())
+      baseline_starts.push_back(b);
   }
   std::vector<std::vector<double>> tried;
   for (const ProfilePoint& point : profile.grid) {

@@ -39,19 +39,19 @@ struct Profile {
   std::vector<std::string> parameters;  // the mechanism's own, in the model's order
   std::vector<std::string> units;
   std::vector<ProfilePoint> grid;
-  std::size_t minimum = 0;              // index into grid
-  std::size_t off = 0;                  // the grid point at the mechanism's off value
-  double likelihood_ratio = 0.0;        // J_p(off) - min J_p (>= 0)
-  double p_value = 1.0;                 // P(chi2_1 >= likelihood_ratio)
+  std::size_t minimum = 0;                          // index into grid
+  std::size_t off = 0;                              // the grid point at the mechanism's off value
+  double likelihood_ratio = 0.0;                    // J_p(off) - min J_p (>= 0)
+  double p_value = 1.0;                             // P(chi2_1 >= likelihood_ratio)
   std::vector<double> interval_low, interval_high;  // per own parameter
   int evaluations = 0, populations = 0;
 };
 
 struct ProfileOptions {
-  int points_per_axis = 9;   // grid points over a switch's range (the off value added); 4 over a shape parameter's
+  int points_per_axis = 9;  // grid points over a switch's range (the off value added); 4 over a shape parameter's
   int shape_points = 4;
-  int evaluations = 30;      // per grid point's search over the baseline's parameters
-  double initial_step = 0.1; // of the unit box
+  int evaluations = 30;       // per grid point's search over the baseline's parameters
+  double initial_step = 0.1;  // of the unit box
 };
 
 // `variant`: the baseline plus one mechanism; `baselines`: values of the baseline's parameters

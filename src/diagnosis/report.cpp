@@ -48,14 +48,15 @@ nlohmann::json adequacy_json(const Adequacy& a) {
   // Each family of measures tested alone, Holm's step-down over the families (adequacy.h).
   j["families"] = nlohmann::json::array();
   for (const FamilyFit& f : a.families) {
-    nlohmann::json family = {{"family", f.family},
-                             {"statistic", f.statistic},
-                             {"residuals", f.residuals},
-                             {"p_value", f.p_value},
-                             {"holm_level", f.holm_level},
-                             {"misfits", f.misfits},
-                             {"mean_magnitude_residual", f.magnitude_residuals > 0 ? nlohmann::json(f.mean_magnitude_residual)
-                                                                                   : nlohmann::json(nullptr)}};
+    nlohmann::json family = {
+        {"family", f.family},
+        {"statistic", f.statistic},
+        {"residuals", f.residuals},
+        {"p_value", f.p_value},
+        {"holm_level", f.holm_level},
+        {"misfits", f.misfits},
+        {"mean_magnitude_residual",
+         f.magnitude_residuals > 0 ? nlohmann::json(f.mean_magnitude_residual) : nlohmann::json(nullptr)}};
     for (const MeasureFamily& m : measure_families()) {
       if (m.name != f.family) continue;
       family["measures"] = m.measures;
@@ -129,7 +130,8 @@ nlohmann::json candidate_json(const CandidateScore& c) {
     profile["units"] = p.units;
     profile["grid"] = nlohmann::json::array();
     for (const ProfilePoint& point : p.grid) {
-      profile["grid"].push_back({{"values", point.values}, {"training_objective", point.objective}, {"point", point.best}});
+      profile["grid"].push_back(
+          {{"values", point.values}, {"training_objective", point.objective}, {"point", point.best}});
     }
     profile["minimum"] = p.minimum;
     profile["off"] = p.off;
@@ -165,10 +167,10 @@ std::string adequacy_markdown(const Adequacy& a) {
   std::ostringstream md;
   md << "\n## Is the baseline adequate?\n\n"
      << (a.adequate ? "Yes" : "No") << ". Goodness of fit over every test: J = " << number(a.statistic, 4) << " over "
-     << a.residuals << " scaled residuals (RMS " << number(a.rms_residual, 3) << " tolerances), p = "
-     << number(a.p_value, 3) << " against chi-square with " << a.degrees_of_freedom << " degrees of freedom"
-     << (a.global_fits ? " (within noise" : " (beyond noise") << " at the " << number(kAdequacyLevel, 2)
-     << " level).\n\n";
+     << a.residuals << " scaled residuals (RMS " << number(a.rms_residual, 3)
+     << " tolerances), p = " << number(a.p_value, 3) << " against chi-square with " << a.degrees_of_freedom
+     << " degrees of freedom" << (a.global_fits ? " (within noise" : " (beyond noise") << " at the "
+     << number(kAdequacyLevel, 2) << " level).\n\n";
   if (!a.families.empty()) {
     md << "By what the measures measure, each family tested alone (Holm's step-down over the families at the same "
           "level; a misfit confined to a few measures is not averaged away over all of them):\n\n"

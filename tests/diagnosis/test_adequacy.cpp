@@ -125,7 +125,7 @@ TEST(Adequacy, ASlidingMisfitInTwoTestsIsNotAveragedAway) {
     EXPECT_EQ(f.misfits, f.family == "sliding") << f.family << " p " << f.p_value;
     if (f.family == "sliding") {
       EXPECT_EQ(f.residuals, 18);
-      EXPECT_LT(f.mean_magnitude_residual, 0.0);  // under-predicted
+      EXPECT_LT(f.mean_magnitude_residual, 0.0);             // under-predicted
       EXPECT_DOUBLE_EQ(f.holm_level, kAdequacyLevel / 4.0);  // the smallest p-value meets Bonferroni's level
     }
   }

@@ -21,9 +21,7 @@
 namespace caskdem::diagnosis {
 namespace {
 
-void append(const std::filesystem::path& file, const std::string& text) {
-  std::ofstream(file, std::ios::app) << text;
-}
+void append(const std::filesystem::path& file, const std::string& text) { std::ofstream(file, std::ios::app) << text; }
 
 struct Made {
   testing::TestDirectory directory;
@@ -38,8 +36,9 @@ void make(Made& made, const std::string& table) {
   made.set = read_measured_set(made.directory.path());
 }
 
-const std::string kTable = "\n[table]\npeak_acceleration = \"0.6 g\"\npeak_velocity = \"0.4 m/s\"\nstroke = \"5 cm\"\n"
-                           "frequencies = [\"1 Hz\", \"8 Hz\"]\n";
+const std::string kTable =
+    "\n[table]\npeak_acceleration = \"0.6 g\"\npeak_velocity = \"0.4 m/s\"\nstroke = \"5 cm\"\n"
+    "frequencies = [\"1 Hz\", \"8 Hz\"]\n";
 
 PlanCandidate baseline_at(const MeasuredSet& set, double friction) {
   const ModelVariant variant(set.specimen, {}, set.vertical_measured);
@@ -54,8 +53,8 @@ TEST(PlanTest, SeparatesTwoFrictionsWithATestThatSlidesOnlyOne) {
   ASSERT_TRUE(made.set.settings.table.has_value());
   DiagnosisOptions options;
   options.threads = 2;
-  const TestPlan plan = plan_tests(made.set, made.set.specimen,
-                                   {baseline_at(made.set, 0.15), baseline_at(made.set, 0.45)}, options);
+  const TestPlan plan =
+      plan_tests(made.set, made.set.specimen, {baseline_at(made.set, 0.15), baseline_at(made.set, 0.45)}, options);
   ASSERT_FALSE(plan.tests.empty());
   EXPECT_EQ(plan.limits_source, "specimen.toml [table]");
   const TableLimits& limits = *made.set.settings.table;

@@ -65,7 +65,7 @@ TEST(Profile, MatchesAProfileKnownInClosedForm) {
     EXPECT_NEAR(point.objective, bowl(point.values[0]), 1e-3) << "r " << point.values[0] << ", v0 " << point.values[1];
   }
   EXPECT_NEAR(p.grid[p.minimum].values[0], 0.6, 1e-12);
-  EXPECT_NEAR(p.likelihood_ratio, bowl(1.0), 1e-3);  // 8
+  EXPECT_NEAR(p.likelihood_ratio, bowl(1.0), 1e-3);                     // 8
   EXPECT_NEAR(p.p_value, std::erfc(std::sqrt(bowl(1.0) / 2.0)), 1e-5);  // chi2_1's tail
   // J_p within 3.841 of its minimum: |r - 0.6| <= 0.277, the grid's 0.45 to 0.75.
   EXPECT_NEAR(p.interval_low[0], 0.45, 1e-12);

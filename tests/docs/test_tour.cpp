@@ -62,14 +62,18 @@ TEST(Tour, EveryCommandRunsAsWritten) {
     EXPECT_EQ(o.status, 0) << line << "\n" << o.output;
     std::printf("ran: %s\n", line.c_str());
   }
-  // The diagnosis' histories state their units, as every HDF5 file does (the others are checked
-  // in tests/casefile/test_output_formats.cpp).
-  const testing::Outcome units = testing::run_shell(
-      "/usr/bin/python3 -c \"import h5py; missing = []; "
-      "h5py.File('" + std::string(CASKDEM_SOURCE_DIR) + "/results/measured/diagnosis/histories.h5', 'r').visititems("
-      "lambda n, i: missing.append(n) if isinstance(i, h5py.Dataset) and i.dtype.kind in 'fiub' and 'units' not in "
-      "i.attrs else None); print('without units:', missing)\"");
-  EXPECT_NE(units.output.find("without units: []"), std::string::npos) << units.output;
+  // The diagnosis' and the plan's histories state their units, as every HDF5 file does (the
+  // others are checked in tests/casefile/test_output_formats.cpp).
+  for (const char* file : {"diagnosis/histories.h5", "diagnosis/plan-histories.h5", "plan/plan-histories.h5"}) {
+    const testing::Outcome units = testing::run_shell(
+        "/usr/bin/python3 -c \"import h5py; missing = []; "
+        "h5py.File('" +
+        std::string(CASKDEM_SOURCE_DIR) + "/results/measured/" + file +
+        "', 'r').visititems("
+        "lambda n, i: missing.append(n) if isinstance(i, h5py.Dataset) and i.dtype.kind in 'fiub' and 'units' not in "
+        "i.attrs else None); print('without units:', missing)\"");
+    EXPECT_NE(units.output.find("without units: []"), std::string::npos) << file << "\n" << units.output;
+  }
 }
 
 }  // namespace
