@@ -32,6 +32,7 @@ repeats=$(
     'ReproducibilityDistributed\.SameBitsOnEveryInstructionSet'
     'Resume\.Killed3DRunResumesToTheUninterruptedResult'
     'Adequacy\.TheBaselineOnItsOwnRuleFitsAndOnTheWrongRuleDoesNot'
+    'PlanTest\.CandidatesThatPredictAlikeAreNotSeparated'
     'TableInputs/AtAFitsOwnPoint\.'
     'PlanarAnd3D/(DeviceLanes|Rollout)Test\..*/spatial'
   )

@@ -50,7 +50,15 @@ std::string plan_markdown(const TestPlan& plan) {
     return md.str();
   }
   md << "Candidates, at their fitted values (model scale, SI):\n\n";
-  for (const PlanCandidate& c : plan.candidates) md << "- " << c.name << "\n";
+  for (std::size_t c = 0; c < plan.candidates.size(); ++c) {
+    md << "- " << plan.candidates[c].name << ":";
+    for (std::size_t i = 0; i < plan.parameters[c].size() && i < plan.candidates[c].point.size(); ++i) {
+      const Parameter& p = plan.parameters[c][i];
+      md << (i ? ", " : " ") << p.name << " " << number(plan.candidates[c].point[i], 4) << (p.units.empty() ? "" : " ")
+         << p.units;
+    }
+    md << "\n";
+  }
   md << "\nTable limits: " << plan.limits_source << ".\n\n"
      << plan.tests.size() << " feasible tests were simulated with every candidate. A test's separation is the "
      << "smallest, over pairs of candidates, of the loss one would take were the other the truth, judged as the "
@@ -93,8 +101,15 @@ void write_plan(const std::filesystem::path& directory, const TestPlan& plan, bo
   for (const PlanCandidate& c : plan.candidates) {
     nlohmann::json names = nlohmann::json::array();
     for (Mechanism m : c.mechanisms) names.push_back(mechanism_name(m));
-    j["candidates"].push_back(
-        {{"name", c.name}, {"mechanisms", names}, {"point", c.point}, {"standard_error", c.standard_error}});
+    nlohmann::json values = nlohmann::json::object();
+    const std::size_t index = static_cast<std::size_t>(&c - plan.candidates.data());
+    for (std::size_t i = 0; i < plan.parameters[index].size() && i < c.point.size(); ++i) {
+      values[plan.parameters[index][i].name] = {
+          {"value", c.point[i]},
+          {"standard_error", i < c.standard_error.size() ? nlohmann::json(c.standard_error[i]) : nlohmann::json(nullptr)},
+          {"units", plan.parameters[index][i].units}};
+    }
+    j["candidates"].push_back({{"name", c.name}, {"mechanisms", names}, {"parameters", values}});
   }
   j["separation"] =
       "min over candidate pairs of min(J_ab, J_ba): the loss b takes beyond a's own were a the truth "

@@ -10,6 +10,8 @@
 #include <numbers>
 #include <sstream>
 
+#include <Eigen/Dense>
+
 #include "core/units.h"
 #include "diagnosis/test_simulation.h"
 #include "ensemble/sampling.h"
@@ -61,6 +63,26 @@ SetNoise noise_of(const MeasuredSet& set) {
   return {median(table), median(rotation), median(slide), median(step)};
 }
 
+// A displacement integrated twice from a noisy channel drifts; the table's own is its
+// departure from the least-squares quadratic through it (the usual baseline correction of a
+// record's displacement; Boore 2001).
+std::vector<double> detrended(const std::vector<double>& d, double dt) {
+  Eigen::Matrix3d normal = Eigen::Matrix3d::Zero();
+  Eigen::Vector3d right = Eigen::Vector3d::Zero();
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    const Eigen::Vector3d basis(1.0, double(k) * dt, double(k) * dt * double(k) * dt);
+    normal += basis * basis.transpose();
+    right += basis * d[k];
+  }
+  const Eigen::Vector3d c = normal.ldlt().solve(right);
+  std::vector<double> out(d.size());
+  for (std::size_t k = 0; k < d.size(); ++k) {
+    const double t = double(k) * dt;
+    out[k] = d[k] - (c[0] + c[1] * t + c[2] * t * t);
+  }
+  return out;
+}
+
 TableLimits limits_of(const MeasuredSet& set, std::string& source) {
   if (set.settings.table) {
     source = "specimen.toml [table]";
@@ -77,7 +99,7 @@ TableLimits limits_of(const MeasuredSet& set, std::string& source) {
     const motion::GroundMotion ground = motion::integrate_record(record);
     for (double a : record.acceleration) limits.peak_acceleration = std::max(limits.peak_acceleration, std::abs(a));
     for (double v : ground.velocity) limits.peak_velocity = std::max(limits.peak_velocity, std::abs(v));
-    for (double d : ground.displacement) limits.stroke = std::max(limits.stroke, std::abs(d));
+    for (double d : detrended(ground.displacement, t.time_step)) limits.stroke = std::max(limits.stroke, std::abs(d));
   }
   limits.min_frequency = kDefaultMinFrequency;
   limits.max_frequency = kDefaultMaxFrequency;
@@ -229,6 +251,9 @@ TestPlan plan_tests(const MeasuredSet& set, const Case& specimen, const std::vec
   const auto start = std::chrono::steady_clock::now();
   TestPlan plan;
   plan.candidates = candidates;
+  for (const PlanCandidate& c : candidates) {
+    plan.parameters.push_back(ModelVariant(specimen, c.mechanisms, set.vertical_measured).parameters());
+  }
   plan.limits = limits_of(set, plan.limits_source);
   const SetNoise noise = noise_of(set);
   plan.tests = feasible_tests(set, plan.limits, noise);

@@ -54,6 +54,7 @@ struct ProposedTest {
 
 struct TestPlan {
   std::vector<PlanCandidate> candidates;
+  std::vector<std::vector<Parameter>> parameters;  // per candidate, in its point's order
   TableLimits limits;
   std::string limits_source;        // "specimen.toml [table]" or how they were taken from the tests
   std::vector<ProposedTest> tests;  // every feasible test tried, best first (none with fewer than two candidates)
