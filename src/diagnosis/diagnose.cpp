@@ -371,6 +371,18 @@ CandidateScore score_candidate(const MeasuredSet& set, Mechanism mechanism, cons
   return score(set, yardstick_of(set, options), mechanism, candidate, reference, options);
 }
 
+Profile profile_on(const MeasuredSet& set, Mechanism mechanism, const std::vector<double>& baseline,
+                   const DiagnosisOptions& options) {
+  const ModelVariant variant(set.specimen, {mechanism}, set.vertical_measured);
+  const Yardstick yardstick = yardstick_of(set, options);
+  const PopulationObjective training = [&](const std::vector<std::vector<double>>& points) {
+    return objective_over(set, yardstick, variant, set.training, points, options);
+  };
+  ProfileOptions profile_options = options.profile_options;
+  profile_options.evaluations = std::max(10, std::min(profile_options.evaluations, set.settings.evaluations / 2));
+  return profile_mechanism(variant, {baseline}, {}, training, profile_options);
+}
+
 std::vector<double> training_objective_without(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms,
                                                const std::vector<std::vector<double>>& points, int left_out,
                                                const DiagnosisOptions& options) {
@@ -434,9 +446,9 @@ SecondEffectSearch search_second_effect(const MeasuredSet& set, const Yardstick&
 }
 
 // Each mechanism's profile (profile.h) from the baseline as refined, after every fit: a fit
-// that ended above its profile's minimum, where that minimum is below the baseline's J by the
-// profile's bound, is repeated from it, so that a value of the mechanism that lowers J is not
-// missed. The profile's off point is the baseline searched again; where
+// that missed its mechanism (at its off value, or no better than the baseline) while the
+// profile's minimum is below the baseline's J by the profile's bound is repeated from that
+// minimum, so that a value of the mechanism that lowers J is not missed. The profile's off point is the baseline searched again; where
 // that, or a profile's baseline values, fits better, the baseline is refitted from them first,
 // as from the candidates' (a mechanism must not gain by a better fit of the baseline alone).
 void profile_candidates(const MeasuredSet& set, const Yardstick& yardstick, Diagnosis& d,
@@ -474,11 +486,15 @@ void profile_candidates(const MeasuredSet& set, const Yardstick& yardstick, Diag
   }
   for (CandidateScore& c : d.ranking) {
     const ProfilePoint& lowest = c.profile->grid[c.profile->minimum];
-    // Only where the profile finds the mechanism lowering J below its fit, and below the
-    // baseline's by the profile's own bound (the data's support for it, chi2_1 at 95 %): a fit
-    // that ends above the baseline is the baseline anyway (switched_off), and one within noise
-    // of it cannot pass the information criterion.
-    if (lowest.objective >= c.model.fit.objective || lowest.objective >= d.baseline.fit.objective - kProfileBound) {
+    // Only a fit that missed the mechanism (its switch at the off value, or no better than the
+    // baseline) where the profile finds it lowering J below the baseline's by the profile's own
+    // bound (the data's support for it, chi2_1 at 95 %). A fit that found the mechanism keeps
+    // its basin: a lower training J elsewhere is not a better prediction (velocity-dependent
+    // friction of seed 101 on caskdem's generator: refitted from its profile's minimum, BIC -35
+    // against -20 but a held-out gain of 0.03 against 0.42; tests/diagnosis/test_hidden_effects.cpp).
+    const bool missed = c.model.fit.objective >= d.baseline.fit.objective || at_off_value(set, c.mechanism, c.model);
+    if (!missed || lowest.objective >= c.model.fit.objective ||
+        lowest.objective >= d.baseline.fit.objective - kProfileBound) {
       continue;
     }
     const ModelVariant variant(set.specimen, {c.mechanism}, set.vertical_measured);

@@ -165,6 +165,11 @@ ModelFit calibrate_baseline(const MeasuredSet& set, const DiagnosisOptions& opti
 
 Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options);
 
+// One mechanism's profile on a data set (profile.h), as diagnose() makes it: every grid point's
+// search over the baseline's parameters starts from `baseline` (the baseline's fitted values).
+Profile profile_on(const MeasuredSet& set, Mechanism mechanism, const std::vector<double>& baseline,
+                   const DiagnosisOptions& options);
+
 // J of a model at each point over the training tests but the `left_out`-th (an index into
 // set.training): what the jackknife's refits minimise (DiagnosisOptions::jackknife).
 std::vector<double> training_objective_without(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms,

@@ -7,7 +7,7 @@
 // the baseline under-predicts the sliding by 4 to 5 tolerances). The profile cannot miss such a
 // theta to within its grid spacing and the baseline's basins the fits found, as every grid
 // point has its own search over the baseline's parameters, from the best of those basins there;
-// where its minimum is below the mechanism's fit, the fit is repeated from it.
+// a fit that missed the mechanism is repeated from the profile's minimum (diagnose.cpp).
 //
 // It also gives what a point estimate does not (Venzon & Moolgavkar 1988; Pawitan, "In All
 // Likelihood", 2001, ch. 3-4). The likelihood-ratio statistic against the model without the
