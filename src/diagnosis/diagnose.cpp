@@ -372,7 +372,7 @@ CandidateScore score_candidate(const MeasuredSet& set, Mechanism mechanism, cons
 }
 
 Profile profile_on(const MeasuredSet& set, Mechanism mechanism, const std::vector<double>& baseline,
-                   const DiagnosisOptions& options) {
+                   const DiagnosisOptions& options, const std::vector<std::vector<double>>& fitted) {
   const ModelVariant variant(set.specimen, {mechanism}, set.vertical_measured);
   const Yardstick yardstick = yardstick_of(set, options);
   const PopulationObjective training = [&](const std::vector<std::vector<double>>& points) {
@@ -380,7 +380,7 @@ Profile profile_on(const MeasuredSet& set, Mechanism mechanism, const std::vecto
   };
   ProfileOptions profile_options = options.profile_options;
   profile_options.evaluations = std::max(10, std::min(profile_options.evaluations, set.settings.evaluations / 2));
-  return profile_mechanism(variant, {baseline}, {}, training, profile_options);
+  return profile_mechanism(variant, {baseline}, fitted, training, profile_options);
 }
 
 std::vector<double> training_objective_without(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms,

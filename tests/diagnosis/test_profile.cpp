@@ -58,9 +58,13 @@ TEST(Profile, MatchesAProfileKnownInClosedForm) {
   const Profile p = profile_mechanism(variant, {baseline}, {}, objective);
 
   // The off point first (r = 1, the decay speed at its reference), then 9 kinetic ratios from
-  // 0.3 to 1.5 (1 not among them) times 4 decay speeds.
+  // 0.3 to 1.5 (1 not among them) and 3 on either side of 1 (1/16, 1/32 and 1/64 of the way to
+  // each edge), times 4 decay speeds.
   EXPECT_EQ(p.off, 0u);
-  EXPECT_EQ(p.grid.size(), 1u + 9u * 4u);
+  EXPECT_EQ(p.grid.size(), 1u + 15u * 4u);
+  int near_off = 0;
+  for (const ProfilePoint& point : p.grid) near_off += std::abs(point.values[0] - (1.0 - 0.7 / 64.0)) < 1e-9;
+  EXPECT_EQ(near_off, 4);
   for (const ProfilePoint& point : p.grid) {
     EXPECT_NEAR(point.objective, bowl(point.values[0]), 1e-3) << "r " << point.values[0] << ", v0 " << point.values[1];
   }
