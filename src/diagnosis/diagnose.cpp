@@ -445,12 +445,12 @@ SecondEffectSearch search_second_effect(const MeasuredSet& set, const Yardstick&
   return search;
 }
 
-// Each mechanism's profile (profile.h) from the baseline as refined, after every fit: a fit
-// that missed its mechanism (at its off value, or no better than the baseline) while the
-// profile's minimum is below the baseline's J by the profile's bound is repeated from that
-// minimum, so that a value of the mechanism that lowers J is not missed. The profile's off point is the baseline searched again; where
-// that, or a profile's baseline values, fits better, the baseline is refitted from them first,
-// as from the candidates' (a mechanism must not gain by a better fit of the baseline alone).
+// Each mechanism's profile (profile.h) from the baseline as refined, after every fit. The
+// profile's off point is the baseline searched again; where that fits better, the baseline is
+// refitted from the off points, as from the candidates' (a mechanism must not gain by a better
+// fit of the baseline alone). With refit_from_profile, a fit that missed its mechanism (at its
+// off value, or no better than the baseline) while the profile's minimum is below the
+// baseline's J by the profile's bound is repeated from that minimum.
 void profile_candidates(const MeasuredSet& set, const Yardstick& yardstick, Diagnosis& d,
                         const DiagnosisOptions& options) {
   const ModelVariant baseline_variant(set.specimen, {}, set.vertical_measured);
@@ -485,6 +485,7 @@ void profile_candidates(const MeasuredSet& set, const Yardstick& yardstick, Diag
     if (refined.fit.objective < d.baseline.fit.objective) d.baseline = std::move(refined);
   }
   for (CandidateScore& c : d.ranking) {
+    if (!options.refit_from_profile) break;
     const ProfilePoint& lowest = c.profile->grid[c.profile->minimum];
     // Only a fit that missed the mechanism (its switch at the off value, or no better than the
     // baseline) where the profile finds it lowering J below the baseline's by the profile's own

@@ -97,8 +97,8 @@ TEST(DecisionInvariants, TheAnswerFollowsItsStatedRules) {
   EXPECT_EQ(stated, 1);
   EXPECT_EQ(chosen, 1);
 
-  // Every mechanism was profiled, and its fit is not above its profile's minimum (a fit that
-  // ended above is repeated from it; profile.h).
+  // Every mechanism was profiled, and its fit is not above its profile's minimum, the fit's
+  // own point being on the profile's grid (profile.h) ...
   for (const CandidateScore& c : d.ranking) {
     ASSERT_TRUE(c.profile.has_value()) << mechanism_name(c.mechanism);
     // ... or above the baseline's J, when the profile's minimum is within its bound of that (no
