@@ -405,6 +405,7 @@ TEST_F(CommandLine, EveryCommandRefusesBadInputWithOneLineAndStatusTwo) {
       {"diagnose", {"diagnose " + measured.string() + " --out " + out, (measured / "specimen.toml").string() + ":30:"}},
       {"evaluate-measured",
        {"evaluate-measured " + good.string() + " --from " + bad_json.string() + " --json " + out, bad_json.string()}},
+      {"plan-test", {"plan-test " + good.string() + " --from " + bad_json.string() + " --out " + out, bad_json.string()}},
       {"synthesize-measured", {"synthesize-measured --out " + out + " --effect nonsense", "--effect: unknown mechanism \"nonsense\""}},
       {"risk", {"risk --hazard " + hazard.string() + " --median \"0.9 g\" --beta 0.4 --json " + out,
                 hazard.string() + ":3: the hazard rises from 0.001 to 0.002 per year"}},
