@@ -18,7 +18,8 @@
 #
 # GENERATOR=PATH takes the data from the independent generator (tests/independent) instead of
 # caskdem's own model. The search for a second effect is skipped (it does not change the
-# cause); SECOND_EFFECT= (empty) runs it.
+# cause); SECOND_EFFECT= (empty) runs it. The proposed tests (plan-test) are skipped too: they
+# do not change the cause either.
 #
 # KEEP=DIR copies each set's diagnosis.json and truth.json to DIR/EFFECT-SEED-*.json, so that
 # decision rules (thresholds, the held-out tolerance rule) can be compared on the same fits
