@@ -206,6 +206,13 @@ ModelFit switched_off(const ModelFit& extended, const ModelVariant& variant) {
   return m;
 }
 
+// The profile's searches take half the [diagnosis] evaluations each (at least 10).
+ProfileOptions profile_options_of(const MeasuredSet& set, const DiagnosisOptions& options) {
+  ProfileOptions o = options.profile_options;
+  o.evaluations = std::max(10, std::min(o.evaluations, set.settings.evaluations / 2));
+  return o;
+}
+
 void say(const DiagnosisOptions& options, const std::string& line) {
   if (options.log) options.log(line);
 }
@@ -378,9 +385,7 @@ Profile profile_on(const MeasuredSet& set, Mechanism mechanism, const std::vecto
   const PopulationObjective training = [&](const std::vector<std::vector<double>>& points) {
     return objective_over(set, yardstick, variant, set.training, points, options);
   };
-  ProfileOptions profile_options = options.profile_options;
-  profile_options.evaluations = std::max(10, std::min(profile_options.evaluations, set.settings.evaluations / 2));
-  return profile_mechanism(variant, {baseline}, fitted, training, profile_options);
+  return profile_mechanism(variant, {baseline}, fitted, training, profile_options_of(set, options));
 }
 
 std::vector<double> training_objective_without(const MeasuredSet& set, const std::vector<Mechanism>& mechanisms,
@@ -455,8 +460,7 @@ void profile_candidates(const MeasuredSet& set, const Yardstick& yardstick, Diag
                         const DiagnosisOptions& options) {
   const ModelVariant baseline_variant(set.specimen, {}, set.vertical_measured);
   const std::size_t k = static_cast<std::size_t>(baseline_variant.baseline_size());
-  ProfileOptions profile_options = options.profile_options;
-  profile_options.evaluations = std::max(10, std::min(profile_options.evaluations, set.settings.evaluations / 2));
+  const ProfileOptions profile_options = profile_options_of(set, options);
   std::vector<std::vector<double>> baseline_starts = {d.baseline.fit.best};
   // Every grid point's search starts from the best there of the baseline's values and those
   // each mechanism's fit settled at.
