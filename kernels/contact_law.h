@@ -29,6 +29,21 @@
 // (Rayleigh) damping coefficient: a damping ratio h at circular frequency omega gives
 // beta = 2 h / omega (Clough & Penzien, Dynamics of Structures, eq. 12-37). A corner out of
 // contact carries no force and forgets its shear spring.
+//
+// The normal law is a model form (Model::normal_law). Beside the paper's linear spring-dashpot,
+// a Hertz spring with Hunt & Crossley's damper (Hunt & Crossley 1975; Gilardi & Sharf 2002,
+// Mech. Mach. Theory 37):
+//   F_n = max(0, K d sqrt(d/d_H) (1 - lambda v_n) - beta K_t v_n),   K_t = (3/2) K sqrt(d/d_H)
+// The spring is K_H d^(3/2) with K_H = K / sqrt(d_H): it pushes as the linear one does at
+// d = d_H (Model::hertz_overlap), stiffens as the contact grows and starts from zero stiffness,
+// so the force rises continuously at touch and falls to zero at separation. Its energy is
+// (2/5) K d^2 sqrt(d/d_H). Hunt & Crossley's damper lambda F_spring v_n loses, in a normal
+// impact at speed u_in with beta = 0, exactly what makes the rebound speed u_out solve
+//   G(-u_out) = G(u_in),   G(u) = u / lambda - ln(1 + lambda u) / lambda^2
+// (m u du / (1 + lambda u) = -K_H d^(3/2) dd integrated from touch to separation), so
+// e = u_out / u_in ~ 1 - (2/3) lambda u_in, independent of the stiffness. The paper's
+// stiffness-proportional damping beta acts on the tangent stiffness K_t, which is zero at touch.
+// The soft floor layer multiplies the spring by its bilinear factor under either law.
 
 #include "kernels/friction_law.h"
 #include "kernels/host_device.h"
@@ -50,30 +65,44 @@ struct CornerContact {
 // spring (with the soft layer) and dashpots, never pulling. Shared by the 2D corners and the 3D
 // cask's contact points (kernels/step3d.h).
 template <class T>
-CASKDEM_HOST_DEVICE inline T normal_force(const T& normal_stiffness, const LaneParameters<T>& lane_parameters,
-                                          const T& gap, const T& normal_velocity) {
+CASKDEM_HOST_DEVICE inline T normal_force(const Model& model, const T& normal_stiffness,
+                                          const LaneParameters<T>& lane_parameters, const T& gap,
+                                          const T& normal_velocity) {
   using lane::broadcast;
   using lane::select;
   const T zero = broadcast<T>(0.0);
   const auto touching = gap < zero;
   const T overlap = select(touching, -gap, zero);
   const T layer = lane_parameters.floor_soft_depth;
-  const T spring_force = normal_stiffness * (lane_parameters.floor_soft_ratio * lane::min(overlap, layer) +
-                                             lane::max(overlap - layer, zero));
+  const T spring_extension =
+      lane_parameters.floor_soft_ratio * lane::min(overlap, layer) + lane::max(overlap - layer, zero);
+  // The law is the model's, the same for every lane and thread: a uniform branch.
+  if (model.normal_law == NormalLaw::hunt_crossley) {
+    const T hertz = lane::sqrt(overlap / broadcast<T>(model.hertz_overlap));  // sqrt(d / d_H)
+    const T spring_force = normal_stiffness * spring_extension * hertz;
+    const T tangent_stiffness = broadcast<T>(1.5) * normal_stiffness * hertz;
+    const T damping_force =
+        (lane_parameters.impact_damping * spring_force + lane_parameters.damping_beta * tangent_stiffness) *
+        normal_velocity;
+    // No tension, as for the linear law.
+    return select(touching, lane::max(spring_force - damping_force, zero), zero);
+  }
+  const T spring_force = normal_stiffness * spring_extension;
   const T damping_force =
       (lane_parameters.damping_beta + lane_parameters.impact_damping * overlap) * normal_stiffness * normal_velocity;
   // No tension: the spring and the dashpots together may push but never pull.
   return select(touching, lane::max(spring_force - damping_force, zero), zero);
 }
 
-// Whether every lane has the paper's linear floor: no soft layer (s = 1, d0 = 0) and no impact
-// damper. There normal_force reduces to max(K_n d - beta K_n v_n, 0) to the bit (s min(d, 0) is
-// +0 and max(d - 0, 0) is d; beta + 0 d is beta), which linear_normal_force computes with fewer
-// operations: the 3D rim evaluates the law at 16 nodes a step.
+// Whether every lane has the paper's linear floor: the linear law, no soft layer (s = 1,
+// d0 = 0) and no impact damper. There normal_force reduces to max(K_n d - beta K_n v_n, 0) to
+// the bit (s min(d, 0) is +0 and max(d - 0, 0) is d; beta + 0 d is beta), which
+// linear_normal_force computes with fewer operations: the 3D rim evaluates the law at 16 nodes a step.
 template <class T>
-CASKDEM_HOST_DEVICE inline bool linear_floor(const LaneParameters<T>& lane_parameters) {
+CASKDEM_HOST_DEVICE inline bool linear_floor(const Model& model, const LaneParameters<T>& lane_parameters) {
   const T zero = lane::broadcast<T>(0.0);
-  return lane::all(lane_parameters.floor_soft_ratio == lane::broadcast<T>(1.0) &&
+  return model.normal_law == NormalLaw::linear &&
+         lane::all(lane_parameters.floor_soft_ratio == lane::broadcast<T>(1.0) &&
                    lane_parameters.floor_soft_depth == zero && lane_parameters.impact_damping == zero);
 }
 
@@ -101,7 +130,7 @@ CASKDEM_HOST_DEVICE inline CornerContact<T> corner_contact(const Model& model, c
   const T beta = lane_parameters.damping_beta;
 
   const auto touching = gap < zero;
-  const T normal = normal_force(normal_stiffness, lane_parameters, gap, velocity.normal_dashpot);
+  const T normal = normal_force(model, normal_stiffness, lane_parameters, gap, velocity.normal_dashpot);
 
   const auto was_slipping = previous.slipping > broadcast<T>(0.5);
   const T trial = previous.shear_spring - shear_stiffness * velocity.spring.slip_x * broadcast<T>(model.time_step);

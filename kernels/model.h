@@ -25,6 +25,13 @@ enum class FrictionLaw : std::int32_t {
   tabulated = 3,       // mu(|v|) interpolated in a table (speed, coefficient)
 };
 
+// The contact's normal law (kernels/contact_law.h): the source paper's linear spring-dashpot, or a
+// Hertz spring K d sqrt(d / d_H) with Hunt & Crossley's damper, a model form of its own.
+enum class NormalLaw : std::int32_t {
+  linear = 0,         // K d - beta K v_n
+  hunt_crossley = 1,  // K d sqrt(d / d_H) (1 - lambda v_n) - beta (3/2) K sqrt(d / d_H) v_n
+};
+
 // Which of the spring-slider's velocity-dependent terms read the velocity at the whole step t_n
 // (extrapolated, kernels/slider.h) rather than at the half step t_{n-1/2} as the source paper's
 // central-difference scheme does; a bit set per term, so that each can be studied alone.
@@ -60,6 +67,11 @@ struct Model {
   double corner_normal_stiffness[kMaxCorners] = {};  // N/m
   double corner_shear_stiffness[kMaxCorners] = {};   // N/m
   double contact_stiffness_scale = 1.0;  // already in the two above; kept for the damping (model/build.h)
+  NormalLaw normal_law = NormalLaw::linear;
+  // d_H, m: the overlap at which the Hunt-Crossley law's spring pushes as the linear one does,
+  // the nominal cask's settlement on linear springs (so both laws carry its weight at the same
+  // overlap); 0 for the linear law.
+  double hertz_overlap = 0.0;
 
   FrictionLaw friction_law = FrictionLaw::constant;
   std::int32_t friction_table_size = 0;

@@ -236,10 +236,10 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
     }
   };
   // The same bits either way (kernels/contact_law.h, linear_floor).
-  if (linear_floor(p)) {
+  if (linear_floor(model, p)) {
     each_pair([&](const T& k, const T& gap, const T& v) { return linear_normal_force(k, p.damping_beta, gap, v); });
   } else {
-    each_pair([&](const T& k, const T& gap, const T& v) { return normal_force(k, p, gap, v); });
+    each_pair([&](const T& k, const T& gap, const T& v) { return normal_force(model, k, p, gap, v); });
   }
   const T normal_x = ring * (c0 * normal_along - s0 * normal_across);  // sum F_n,j x_j
   const T normal_z = ring * (s0 * normal_along + c0 * normal_across);  // sum F_n,j z_j
@@ -273,7 +273,7 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
     const SliderVelocities<T> centre_velocity = contact_velocities(lever);
     const T normal_stiffness = broadcast<T>(contacts.centre_normal_stiffness) * p.stiffness_scale;
     const T shear_stiffness = broadcast<T>(contacts.centre_shear_stiffness) * p.stiffness_scale;
-    const T normal = normal_force(normal_stiffness, p, gap, centre_velocity.normal_dashpot);
+    const T normal = normal_force(model, normal_stiffness, p, gap, centre_velocity.normal_dashpot);
     centre_normal = normal;
     centre_slip_x = centre_velocity.spring.slip_x;
     centre_slip_z = centre_velocity.spring.slip_z;

@@ -144,6 +144,8 @@ void read_contact(TableReader& root, Case& c) {
     c.model.stiffness.normal = t.positive("normal_stiffness", t.quantity("normal_stiffness", Dimension::distributed_stiffness));
     c.model.stiffness.shear = t.positive("shear_stiffness", t.quantity("shear_stiffness", Dimension::distributed_stiffness));
   }
+  c.model.normal_law = normal_law_of(t.choice("normal_law", normal_law_names(), normal_law_name(NormalLaw::linear)));
+  c.parameters.impact_damping = t.non_negative("impact_damping", t.quantity_or("impact_damping", Dimension::slowness, 0.0));
   t.reject_unknown_keys();
 }
 
@@ -448,7 +450,7 @@ const KeySchema& shared_case_keys() {
       {"cask",
        {"shape", "dimensions", "rounding", "mass", "density", "inertia", "diameter", "height", "half_width",
         "footprint", "footprint_points", "eccentricity", "axial_inertia", "vertices", "depth", "centre_of_mass"}},
-      {"contact", {"normal_stiffness", "shear_stiffness", "barkan"}},
+      {"contact", {"normal_stiffness", "shear_stiffness", "barkan", "normal_law", "impact_damping"}},
       {"contact.barkan", {"shear_modulus", "poisson_ratio", "beta_z", "beta_x"}},
       {"friction", {"law", "coefficient", "static", "kinetic", "decay_speed", "table", "table_file"}},
       {"damping", {"ratio", "frequency"}},

@@ -23,6 +23,7 @@ const std::vector<UnitFactor>& units_of(Dimension dimension) {
   static const std::vector<UnitFactor> distributed = {{"N/m^3", 1.0}, {"bar/cm", bar_per_cm}, {"MPa/m", 1e6}, {"GPa/m", 1e9}};
   static const std::vector<UnitFactor> stiffness = {{"N/m", 1.0}, {"kN/m", 1e3}, {"MN/m", 1e6}, {"GN/m", 1e9}};
   static const std::vector<UnitFactor> inertia = {{"kg m^2", 1.0}, {"t m^2", tonne}};
+  static const std::vector<UnitFactor> slowness = {{"s/m", 1.0}, {"s/cm", 100.0}};
   switch (dimension) {
     case Dimension::dimensionless: return none;
     case Dimension::length: return length;
@@ -37,6 +38,7 @@ const std::vector<UnitFactor>& units_of(Dimension dimension) {
     case Dimension::distributed_stiffness: return distributed;
     case Dimension::stiffness: return stiffness;
     case Dimension::moment_of_inertia: return inertia;
+    case Dimension::slowness: return slowness;
   }
   return none;
 }
@@ -56,6 +58,7 @@ std::string dimension_name(Dimension dimension) {
     case Dimension::distributed_stiffness: return "a stiffness per unit area";
     case Dimension::stiffness: return "a stiffness";
     case Dimension::moment_of_inertia: return "a moment of inertia";
+    case Dimension::slowness: return "an inverse speed";
   }
   return "a quantity";
 }

@@ -25,6 +25,7 @@ enum class Dimension {
   distributed_stiffness,  // N/m^3: stiffness per unit contact area
   stiffness,             // N/m
   moment_of_inertia,     // kg m^2
+  slowness,              // s/m: an inverse speed (the Hunt-Crossley damper)
 };
 
 struct UnitFactor {

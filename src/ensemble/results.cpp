@@ -167,6 +167,9 @@ std::vector<char> result_image(const std::filesystem::path& file, const Ensemble
     root.attribute("dimensions", std::int64_t(plan.three_d() ? 3 : 2));
     root.attribute("time_step_s", plan.model().time_step);
     root.attribute("slider", slider_name_of(plan.model().whole_step_terms));
+    root.attribute("normal_law", normal_law_name(plan.model().normal_law));
+    if (plan.model().normal_law == NormalLaw::hunt_crossley) root.attribute("hertz_overlap_m", plan.model().hertz_overlap);
+    root.attribute("impact_damping_s_m", spec.base.parameters.impact_damping);
     root.attribute("stability_angle_rad", plan.stability_angle());
     root.attribute("frequency_parameter_rad_s", plan.frequency_parameter());
     root.attribute("intensity_measure", intensity_name(spec.measure));

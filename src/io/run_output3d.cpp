@@ -54,7 +54,8 @@ void print_summary3d(std::ostream& out, const RunReport3D& report) {
   out << std::setprecision(4);
   out << "case            " << (report.source ? report.source->title : "") << " (3D)\n";
   out << "time step       " << s.time_step << " s (" << report.wall_seconds << " s wall), "
-      << slider_name_of(report.model.model.whole_step_terms) << " slider\n";
+      << slider_name_of(report.model.model.whole_step_terms) << " slider, "
+      << contact_law_text(report.model.model, report.parameters.impact_damping) << "\n";
   out << "alpha           " << s.stability_angle << " rad (" << units::rad_to_deg(s.stability_angle) << " deg)\n";
   out << "motion          incidence " << units::rad_to_deg(report.motions.incidence) << " deg, scale "
       << report.motions.scale_factor;
@@ -162,6 +163,11 @@ void write_run_hdf5_3d(const std::filesystem::path& file, const RunReport3D& rep
   model.attribute("standing_normal_stiffness_N_m", standing_stiffness(report.model.contacts));
   model.attribute("tip_over_angle_rad", report.model.model.tip_over_angle);
   model.attribute("slider", slider_name_of(report.model.model.whole_step_terms));
+  model.attribute("normal_law", normal_law_name(report.model.model.normal_law));
+  if (report.model.model.normal_law == NormalLaw::hunt_crossley) {
+    model.attribute("hertz_overlap_m", report.model.model.hertz_overlap);
+  }
+  model.attribute("impact_damping_s_m", report.parameters.impact_damping);
 
   if (!h.time.empty()) {
     hdf5::Group history = root.group("history");

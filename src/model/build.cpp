@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/text.h"
+#include "kernels/contact_law.h"
 #include "kernels/portable_math.h"
 
 namespace caskdem {
@@ -50,25 +51,29 @@ ModelFacts model_facts(const Model& model, const ModelSpec& spec, const Realisat
   ModelFacts f;
   f.total_normal_stiffness = total_standing_normal_stiffness(model) * p.stiffness_scale;
   f.total_shear_stiffness = total_standing_shear_stiffness(model) * p.stiffness_scale;
-  f.static_penetration = p.mass * model.gravity / f.total_normal_stiffness;
+  f.static_penetration = overlap_carrying(model, f.total_normal_stiffness, p.mass * model.gravity);
   f.natural_frequency = std::sqrt(f.total_normal_stiffness / p.mass);
   f.damping_beta = damping_beta(model, p);
   f.stability_angle_positive = stability_angle(spec.section, +1);
   f.stability_angle_negative = stability_angle(spec.section, -1);
-  // Upper bound on the highest rigid-body frequency on the springs: trace of M^-1 K.
+  // Upper bound on the highest rigid-body frequency on the springs: trace of M^-1 K, with the
+  // Hunt-Crossley spring's tangent stiffness at rest, (3/2) K (it stiffens further in an impact,
+  // as sqrt(d / d_H): the default step's margin of 1/f_s = 100 covers overlaps of 10^4 d_H).
+  const double normal_tangent = model.normal_law == NormalLaw::hunt_crossley ? 1.5 : 1.0;
   double rotational = 0.0;
   double low = 1e300, high = -1e300;
   for (int k = 0; k < model.corner_count; ++k) {
     if (model.corner_rest_gap[k] > kRestGapTolerance) continue;
     const double arm_x = model.corner_x[k] - p.centre_of_mass.x;
     const double arm_y = model.corner_y[k] - model.rounding_radius - p.centre_of_mass.y;
-    rotational += p.stiffness_scale * (model.corner_normal_stiffness[k] * arm_x * arm_x +
+    rotational += p.stiffness_scale * (normal_tangent * model.corner_normal_stiffness[k] * arm_x * arm_x +
                                        model.corner_shear_stiffness[k] * arm_y * arm_y);
     low = std::min(low, model.corner_x[k]);
     high = std::max(high, model.corner_x[k]);
   }
   f.half_span = 0.5 * (high - low);
-  f.highest_frequency = std::sqrt((f.total_normal_stiffness + f.total_shear_stiffness) / p.mass + rotational / p.inertia);
+  f.highest_frequency =
+      std::sqrt((normal_tangent * f.total_normal_stiffness + f.total_shear_stiffness) / p.mass + rotational / p.inertia);
   const double z = f.damping_beta * f.highest_frequency / 2.0;
   f.stable_time_step = 2.0 / f.highest_frequency * (std::sqrt(1.0 + z * z) - z);
   return f;
@@ -174,6 +179,8 @@ Model build_model(const ModelSpec& spec, const RealisationParameters& nominal) {
 
   const double standing = total_standing_normal_stiffness(m);
   if (!(standing > 0.0)) throw std::invalid_argument("no corner stands on the floor at rest");
+  m.normal_law = spec.normal_law;
+  if (spec.normal_law == NormalLaw::hunt_crossley) m.hertz_overlap = nominal.mass * m.gravity / standing;
   if (!(spec.safety_factor > 0.0)) throw std::invalid_argument("the safety factor must be positive");
   m.time_step = spec.time_step > 0.0 ? spec.time_step : spec.safety_factor * 2.0 * std::sqrt(nominal.mass / standing);
 
@@ -278,6 +285,53 @@ LaneParameters<double> lane_parameters(const Model& model, const RealisationPara
   return lane;
 }
 
+namespace {
+struct NormalLawName {
+  const char* name;
+  NormalLaw law;
+};
+constexpr NormalLawName kNormalLaws[] = {{"linear", NormalLaw::linear}, {"hunt-crossley", NormalLaw::hunt_crossley}};
+}  // namespace
+
+const std::vector<std::string>& normal_law_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> all;
+    for (const NormalLawName& law : kNormalLaws) all.emplace_back(law.name);
+    return all;
+  }();
+  return names;
+}
+
+NormalLaw normal_law_of(const std::string& name) {
+  for (const NormalLawName& law : kNormalLaws) {
+    if (name == law.name) return law.law;
+  }
+  throw std::invalid_argument("unknown normal law '" + name + "' (expected \"linear\" or \"hunt-crossley\")");
+}
+
+std::string normal_law_name(NormalLaw law) {
+  for (const NormalLawName& entry : kNormalLaws) {
+    if (law == entry.law) return entry.name;
+  }
+  return "unknown";
+}
+
+std::string contact_law_text(const Model& model, double impact_damping) {
+  std::string text = normal_law_name(model.normal_law) + " law";
+  if (model.normal_law == NormalLaw::hunt_crossley) {
+    text += " (d_H " + number_text(model.hertz_overlap) + " m, damper " + number_text(impact_damping) + " s/m)";
+  } else if (impact_damping > 0.0) {
+    text += " (impact damper " + number_text(impact_damping) + " s/m)";
+  }
+  return text;
+}
+
+double overlap_carrying(const Model& model, double stiffness, double force) {
+  const double linear = force / stiffness;
+  // K d sqrt(d / d_H) = F  <=>  d = (F / K)^(2/3) d_H^(1/3)
+  return model.normal_law == NormalLaw::hunt_crossley ? std::cbrt(linear * linear * model.hertz_overlap) : linear;
+}
+
 BodyState<double> rest_state(const Model& model, const LaneParameters<double>& lane) {
   // Vertical equilibrium of the upright cask: the total spring force of the corners equals its
   // weight. The force grows monotonically as the cask sinks, so bisection on the height finds
@@ -287,17 +341,17 @@ BodyState<double> rest_state(const Model& model, const LaneParameters<double>& l
     double total = 0.0;
     for (int k = 0; k < model.corner_count; ++k) {
       const double lowered = k == model.camber_corner ? lane.base_camber : 0.0;
-      const double overlap = std::max(0.0, sink + lowered - model.corner_rest_gap[k]);
-      const double stiffness = model.corner_normal_stiffness[k] * lane.stiffness_scale;
-      total += stiffness * (lane.floor_soft_ratio * std::min(overlap, lane.floor_soft_depth) +
-                            std::max(overlap - lane.floor_soft_depth, 0.0));
+      const double gap = -std::max(0.0, sink + lowered - model.corner_rest_gap[k]);
+      // At rest: the contact law's spring alone.
+      total += kernels::normal_force(model, model.corner_normal_stiffness[k] * lane.stiffness_scale, lane, gap, 0.0);
     }
     return total;
   };
   const double linear = weight / (total_standing_normal_stiffness(model) * lane.stiffness_scale);
   double sink = linear;
-  if (lane.floor_soft_ratio != 1.0 || lane.base_camber != 0.0) {
-    double low = -lane.base_camber, high = linear / lane.floor_soft_ratio + lane.floor_soft_depth;
+  if (lane.floor_soft_ratio != 1.0 || lane.base_camber != 0.0 || model.normal_law != NormalLaw::linear) {
+    // The Hertz spring pushes at least as the linear one beyond d_H.
+    double low = -lane.base_camber, high = linear / lane.floor_soft_ratio + lane.floor_soft_depth + model.hertz_overlap;
     for (int i = 0; i < 200 && high - low > 1e-15 * (1.0 + high); ++i) {
       const double middle = 0.5 * (low + high);
       (spring_force(middle) < weight ? low : high) = middle;
@@ -324,7 +378,8 @@ BodyState<double> tilted_state(const Model& model, const LaneParameters<double>&
       pivot = k;
     }
   }
-  const double penetration = model.gravity / (lane.inverse_mass * model.corner_normal_stiffness[pivot] * lane.stiffness_scale);
+  const double penetration = overlap_carrying(model, model.corner_normal_stiffness[pivot] * lane.stiffness_scale,
+                                              model.gravity / lane.inverse_mass);
   const double arm_x = model.corner_x[pivot] - lane.centre_x;
   const double arm_y = model.corner_y[pivot] - lane.centre_y;
   BodyState<double> body{};

@@ -39,6 +39,9 @@ struct ModelSpec {
   DistributedStiffness stiffness;
   FrictionLaw friction_law = FrictionLaw::constant;
   std::vector<std::pair<double, double>> friction_table;  // (slip speed m/s, coefficient), for the tabulated law
+  // The contact's normal law (kernels/contact_law.h); the Hunt-Crossley law's d_H is the nominal
+  // cask's settlement on the linear springs.
+  NormalLaw normal_law = NormalLaw::linear;
   double safety_factor = 0.01;   // f_s
   // Contact-stiffness scaling, a numerical device (docs/time-step.md): the normal and shear
   // springs times this factor, a given damping frequency times its square root (the damping
@@ -108,8 +111,19 @@ ModelFacts model_facts(const Model& model, const ModelSpec& spec, const Realisat
 double damping_beta(const Model& model, const RealisationParameters& parameters);
 double total_standing_normal_stiffness(const Model& model);  // sum over corners with rest gap 0
 
+// The normal laws by name, as case files give them ([contact] normal_law): "linear",
+// "hunt-crossley".
+const std::vector<std::string>& normal_law_names();
+NormalLaw normal_law_of(const std::string& name);  // throws std::invalid_argument naming the choices
+std::string normal_law_name(NormalLaw law);
+// "linear law", or "hunt-crossley law (d_H 7.3e-06 m, damper 2 s/m)": what a printout says of the contact.
+std::string contact_law_text(const Model& model, double impact_damping);
+// The overlap at which a contact of spring constant K carries the force F at rest under the
+// model's law without soft layer: F / K (linear), (F / K)^(2/3) d_H^(1/3) (Hunt-Crossley).
+double overlap_carrying(const Model& model, double stiffness, double force);
+
 // Standing upright at rest, its height in vertical equilibrium on its springs (m g / K for
-// linear springs; solved for a soft floor layer or a convex base).
+// linear springs; solved for a soft floor layer, a convex base or the Hunt-Crossley law).
 BodyState<double> rest_state(const Model& model, const LaneParameters<double>& lane);
 // Tilted by `rotation` about the pivot corner it then rests on, at rest, the pivot carrying the weight.
 BodyState<double> tilted_state(const Model& model, const LaneParameters<double>& lane, double rotation);

@@ -109,6 +109,8 @@ Model3D build_model3d(const ModelSpec& spec, const CaskSpec3D& cask, const Reali
   m.gravity = spec.gravity;
   if (!(spec.safety_factor > 0.0)) throw std::invalid_argument("the safety factor must be positive");
   m.time_step = spec.time_step > 0.0 ? spec.time_step : spec.safety_factor * 2.0 * std::sqrt(nominal.mass / standing_stiffness(c));
+  m.normal_law = spec.normal_law;
+  if (spec.normal_law == NormalLaw::hunt_crossley) m.hertz_overlap = nominal.mass * m.gravity / standing_stiffness(c);
   // The centre of mass passes over the pivot (a ring point's sphere centre) at alpha; first
   // over the ring point nearest to it, towards the eccentricity.
   m.stability_angle = std::atan2(ring - eccentricity, nominal.centre_of_mass.y - r);
@@ -123,12 +125,14 @@ Model3D build_model3d(const ModelSpec& spec, const CaskSpec3D& cask, const Reali
   c.stability_departure = departure_of(m.stability_angle);
 
   // Stability: w_max^2 <= trace(M^-1 K) of the six rigid-body modes on the springs, standing.
+  // The Hunt-Crossley spring's tangent stiffness at rest is (3/2) K (model/build.cpp, model_facts).
+  const double normal_tangent = m.normal_law == NormalLaw::hunt_crossley ? 1.5 : 1.0;
   double trace = 0.0;
   for_standing_points(c, [&](double x, double z, double normal_stiffness, double shear_stiffness) {
     const double lx = x - nominal.centre_of_mass.x, ly = -nominal.centre_of_mass.y, lz = z;
     const double I1 = nominal.inertia, I3 = nominal.axial_inertia;
     // normal (along y): l x e_y = (-lz, 0, lx); shear along x: l x e_x = (0, lz, -ly); along z: (ly, -lx, 0)
-    trace += normal_stiffness * (1.0 / nominal.mass + (lz * lz + lx * lx) / I1);
+    trace += normal_tangent * normal_stiffness * (1.0 / nominal.mass + (lz * lz + lx * lx) / I1);
     trace += shear_stiffness * (1.0 / nominal.mass + lz * lz / I3 + ly * ly / I1);
     trace += shear_stiffness * (1.0 / nominal.mass + ly * ly / I1 + lx * lx / I3);
   });
@@ -155,7 +159,9 @@ LaneParameters<double> lane_parameters3d(const Model3D& model, const Realisation
 }
 
 BodyState3D<double> rest_state3d(const Model3D& model, const LaneParameters<double>& lane) {
-  const double penetration = model.model.gravity / (lane.inverse_mass * standing_stiffness(model.contacts) * lane.stiffness_scale);
+  // Every point of the flat base sinks alike, so the base carries the weight as one contact.
+  const double penetration = overlap_carrying(model.model, standing_stiffness(model.contacts) * lane.stiffness_scale,
+                                              model.model.gravity / lane.inverse_mass);
   BodyState3D<double> b{};
   b.x = lane.centre_x;
   b.y = lane.centre_y - penetration;

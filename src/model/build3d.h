@@ -52,7 +52,7 @@ Model3D build_model3d(const ModelSpec& spec, const CaskSpec3D& cask, const Reali
 // the damping coefficient of the 3D base (beta = 2 h / w, w given or sqrt(k_n A / m)).
 LaneParameters<double> lane_parameters3d(const Model3D& model, const RealisationParameters& parameters);
 
-// Standing upright at rest on its springs (penetration m g / (k_n A)), and the response's datum.
+// Standing upright at rest on its springs (penetration m g / (k_n A) on linear springs), and the response's datum.
 BodyState3D<double> rest_state3d(const Model3D& model, const LaneParameters<double>& lane);
 // Leaning at `tilt` towards the azimuth psi (from +x towards +z: the top moves along
 // (cos psi, 0, sin psi)), on the rim point of that direction, which stays where it stood, at rest.

@@ -171,6 +171,24 @@ TEST_F(CaseErrors, TheSliderIsReadFromTheCase) {
   EXPECT_EQ(load_case(testing::case_path("model-1-3-sine.toml")).model.whole_step_terms, 0) << "the paper's by default";
 }
 
+TEST_F(CaseErrors, TheNormalLawAndItsDamperAreReadAndCheckedWithTheirKeys) {
+  const std::string contact = "shear_stiffness = \"2.21e3 bar/cm\"";
+  const auto hertz = variant("hertz", contact, contact + "\nnormal_law = \"hunt-crossley\"\nimpact_damping = \"2 s/m\"");
+  const Case c = load_case(hertz);
+  EXPECT_EQ(c.model.normal_law, NormalLaw::hunt_crossley);
+  EXPECT_EQ(c.parameters.impact_damping, 2.0);
+  EXPECT_EQ(load_case(testing::case_path("model-1-3-sine.toml")).model.normal_law, NormalLaw::linear)
+      << "the paper's by default";
+  const auto unknown = variant("hertz-law", contact, contact + "\nnormal_law = \"hertz\"");
+  const std::string e = error_of(unknown);
+  EXPECT_THAT(e, HasSubstr(":" + std::to_string(line_of(unknown, "normal_law = ")) + ": key contact.normal_law"));
+  EXPECT_THAT(e, HasSubstr("\"linear\", \"hunt-crossley\""));
+  const auto negative = variant("negative-damper", contact, contact + "\nimpact_damping = \"-1 s/m\"");
+  EXPECT_THAT(error_of(negative), HasSubstr("key contact.impact_damping"));
+  const auto unitless = variant("damper-unit", contact, contact + "\nimpact_damping = \"2 m/s\"");
+  EXPECT_THAT(error_of(unitless), HasSubstr("key contact.impact_damping: unit \"m/s\" is not an inverse speed unit (accepted: s/m, s/cm)"));
+}
+
 TEST_F(CaseErrors, ShakingLongerThanADayIsRefused) {
   const auto file = variant("cycles", "cycles = 10", "cycles = 1e15");
   EXPECT_THAT(error_of(file), HasSubstr("key motion.cycles: expected at most 100000 s of shaking"));

@@ -157,6 +157,32 @@ TEST_P(DeviceLanesTest, HostLanesGiveTheCpuBitsWithTheWholeStepSlider) {
               std::string(GetParam()) + ", whole-step slider");
 }
 
+// The Hunt-Crossley normal law with its damper (a model form: one uniform branch of the contact
+// law), on queued host lanes and on every SIMD width this machine runs, both casks.
+TEST_P(DeviceLanesTest, EveryPathGivesTheCpuBitsWithTheHuntCrossleyLaw) {
+  EnsembleSpec spec = load_ensemble(kData + GetParam());
+  spec.realisations_per_stripe = spec.three_d() ? 3 : 8;
+  spec.base.model.normal_law = NormalLaw::hunt_crossley;
+  spec.base.parameters.impact_damping = 2.0;  // s/m
+  spec.uncertain.erase("restitution");       // the calibration's reach depends on the law
+  const EnsemblePlan plan(spec, InstructionSet::scalar);
+  ASSERT_GT(plan.model().hertz_overlap, 0.0);
+  const MotionTables tables(plan);
+  const std::vector<std::int64_t> all = all_of(plan);
+  const Outcomes cpu = on_cpu(plan, tables, all);
+  expect_mixed(plan, cpu);
+  expect_same(on_host_lanes(plan, tables, all, {6, 9, 3000}), cpu, std::string(GetParam()) + ", Hunt-Crossley");
+  for (InstructionSet isa : {InstructionSet::sse2, InstructionSet::avx2, InstructionSet::avx512f}) {
+    if (!instruction_set_available(isa)) continue;
+    Outcomes wide;
+    RunOptions options;
+    options.isa = isa;
+    options.lanes = 8;
+    run_realisations(plan, tables, all, options, collect(wide));
+    expect_same(wide, cpu, std::string(GetParam()) + ", Hunt-Crossley, " + instruction_set_name(isa));
+  }
+}
+
 // A resumed run's pending realisations are not contiguous: any subset in any order.
 TEST_P(DeviceLanesTest, AnySubsetGivesItsRealisationsTheirBits) {
   EnsembleSpec spec = load_ensemble(kData + GetParam());

@@ -7,6 +7,7 @@
 //     operation differs, where a realisation does;
 //   - every realisation of every shipped ensemble (ensembles/*.toml), planar and 3D, on the GPU
 //     and on the CPU engine (all cores): status, maxima, residuals, end time, spin, bit for bit;
+//     and of the test ensembles with the Hunt-Crossley normal law;
 //   - `caskdem ensemble --device auto` writes the CPU's result file.
 
 #include <omp.h>
@@ -111,6 +112,57 @@ double seconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 }
 
+struct Comparison {
+  std::int64_t realisations = 0, identical = 0;
+  double cpu_seconds = 0.0, gpu_seconds = 0.0;
+};
+
+// Every realisation of `spec` on the GPU and on the CPU engine (all cores), field by field.
+Comparison gpu_against_cpu(LaneDevice& gpu, const EnsembleSpec& spec, const std::string& name) {
+  const EnsemblePlan plan(spec, InstructionSet::automatic);
+  const MotionTables tables(plan, MotionTables::kDeviceBudgetBytes);
+  std::vector<std::int64_t> all(static_cast<std::size_t>(plan.size()));
+  for (std::int64_t i = 0; i < plan.size(); ++i) all[static_cast<std::size_t>(i)] = i;
+  std::vector<Fields> cpu(all.size()), device(all.size());
+  std::vector<int> seen(all.size(), 0);
+  RunOptions options;
+  options.threads = omp_get_max_threads();
+  options.lanes = spec.block_lanes;
+  Comparison c;
+  c.realisations = plan.size();
+  auto start = std::chrono::steady_clock::now();
+  run_realisations(plan, tables, all, options,
+                   [&](const std::vector<std::int64_t>& done, const std::vector<RealisationOutcome>& outcomes) {
+                     for (std::size_t k = 0; k < done.size(); ++k) cpu[done[k]] = fields_of(outcomes[k]);
+                   });
+  c.cpu_seconds = seconds_since(start);
+  DeviceLanes lanes(plan, tables, gpu);
+  options.device = &lanes;
+  start = std::chrono::steady_clock::now();
+  run_realisations(plan, tables, all, options,
+                   [&](const std::vector<std::int64_t>& done, const std::vector<RealisationOutcome>& outcomes) {
+                     for (std::size_t k = 0; k < done.size(); ++k) {
+                       device[done[k]] = fields_of(outcomes[k]);
+                       ++seen[done[k]];
+                     }
+                   });
+  c.gpu_seconds = seconds_since(start);
+  std::int64_t differ = 0;
+  for (std::size_t i = 0; i < all.size(); ++i) {
+    EXPECT_EQ(seen[i], 1) << name << ": realisation " << i << " reported " << seen[i] << " times";
+    if (device[i] == cpu[i]) {
+      ++c.identical;
+    } else if (++differ <= 3) {
+      ADD_FAILURE() << name << ": realisation " << i << " differs";
+    }
+  }
+  std::printf("%-40s %4d %12lld %12lld %10.2f %10.2f\n", name.c_str(), spec.three_d() ? 3 : 2,
+              static_cast<long long>(c.realisations), static_cast<long long>(c.identical), c.cpu_seconds,
+              c.gpu_seconds);
+  std::fflush(stdout);
+  return c;
+}
+
 TEST(Gpu, EveryShippedEnsembleGivesTheCpuBits) {
   std::string why;
   const std::unique_ptr<LaneDevice> gpu = first_gpu(&why);
@@ -126,49 +178,27 @@ TEST(Gpu, EveryShippedEnsembleGivesTheCpuBits) {
   int planar = 0, spatial = 0;
   for (const std::filesystem::path& file : files) {
     const EnsembleSpec spec = load_ensemble(file);
-    const EnsemblePlan plan(spec, InstructionSet::automatic);
-    const MotionTables tables(plan, MotionTables::kDeviceBudgetBytes);
-    std::vector<std::int64_t> all(static_cast<std::size_t>(plan.size()));
-    for (std::int64_t i = 0; i < plan.size(); ++i) all[static_cast<std::size_t>(i)] = i;
-    std::vector<Fields> cpu(all.size()), device(all.size());
-    std::vector<int> seen(all.size(), 0);
-    RunOptions options;
-    options.threads = omp_get_max_threads();
-    options.lanes = spec.block_lanes;
-    auto start = std::chrono::steady_clock::now();
-    run_realisations(plan, tables, all, options,
-                     [&](const std::vector<std::int64_t>& done, const std::vector<RealisationOutcome>& outcomes) {
-                       for (std::size_t k = 0; k < done.size(); ++k) cpu[done[k]] = fields_of(outcomes[k]);
-                     });
-    const double cpu_seconds = seconds_since(start);
-    DeviceLanes lanes(plan, tables, *gpu);
-    options.device = &lanes;
-    start = std::chrono::steady_clock::now();
-    run_realisations(plan, tables, all, options,
-                     [&](const std::vector<std::int64_t>& done, const std::vector<RealisationOutcome>& outcomes) {
-                       for (std::size_t k = 0; k < done.size(); ++k) {
-                         device[done[k]] = fields_of(outcomes[k]);
-                         ++seen[done[k]];
-                       }
-                     });
-    const double gpu_seconds = seconds_since(start);
-    std::int64_t identical = 0, differ = 0;
-    for (std::size_t i = 0; i < all.size(); ++i) {
-      EXPECT_EQ(seen[i], 1) << file.filename() << ": realisation " << i << " reported " << seen[i] << " times";
-      if (device[i] == cpu[i]) {
-        ++identical;
-      } else if (++differ <= 3) {
-        ADD_FAILURE() << file.filename() << ": realisation " << i << " differs";
-      }
-    }
-    std::printf("%-40s %4d %12lld %12lld %10.2f %10.2f\n", file.filename().string().c_str(), spec.three_d() ? 3 : 2,
-                static_cast<long long>(plan.size()), static_cast<long long>(identical), cpu_seconds, gpu_seconds);
-    std::fflush(stdout);
-    EXPECT_EQ(identical, plan.size()) << file.filename();
+    const Comparison c = gpu_against_cpu(*gpu, spec, file.filename().string());
+    EXPECT_EQ(c.identical, c.realisations) << file.filename();
     (spec.three_d() ? spatial : planar) += 1;
   }
   EXPECT_GT(planar, 0);
   EXPECT_GT(spatial, 0);
+}
+
+// The Hunt-Crossley normal law with its damper (kernels/contact_law.h), planar and 3D.
+TEST(Gpu, TheHuntCrossleyLawGivesTheCpuBits) {
+  std::string why;
+  const std::unique_ptr<LaneDevice> gpu = first_gpu(&why);
+  if (!gpu) GTEST_SKIP() << "no GPU to compare with: " << why;
+  for (const char* name : {"mixed-outcomes.toml", "mixed-outcomes-3d.toml"}) {
+    EnsembleSpec spec = load_ensemble(std::string(CASKDEM_SOURCE_DIR) + "/tests/ensemble/data/" + name);
+    spec.base.model.normal_law = NormalLaw::hunt_crossley;
+    spec.base.parameters.impact_damping = 2.0;  // s/m
+    spec.uncertain.erase("restitution");
+    const Comparison c = gpu_against_cpu(*gpu, spec, std::string(name) + " (Hunt-Crossley)");
+    EXPECT_EQ(c.identical, c.realisations) << name;
+  }
 }
 
 class GpuCommand : public testing::TemporaryFiles {};

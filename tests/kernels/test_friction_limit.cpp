@@ -95,7 +95,7 @@ std::vector<Situation> situations(const Model& m, std::mt19937_64& random) {
     const double speed = unit(random) < 0.3 ? special[i % 6] : std::pow(10.0, -6.0 + 6.0 * unit(random));
     s.slip_velocity = speed * (unit(random) < 0.5 ? -1.0 : 1.0);
     s.slipping = unit(random) < 0.3 ? 1.0 : 0.0;
-    const double normal = normal_force(m.corner_normal_stiffness[0], s.p, s.gap, s.normal_velocity);
+    const double normal = normal_force(m, m.corner_normal_stiffness[0], s.p, s.gap, s.normal_velocity);
     const double floor = lowest_friction<Law>(m, s.p) * normal;
     const double exact = friction_coefficient<Law>(m, s.p, std::abs(s.slip_velocity), s.slipping > 0.5) * normal;
     const double at = unit(random) < 0.5 ? floor : exact;
@@ -118,7 +118,7 @@ CornerContact<double> law_2d(const Model& m, const Situation& s) {
   const double kn = m.corner_normal_stiffness[0] * s.p.stiffness_scale;
   const double ks = m.corner_shear_stiffness[0] * s.p.stiffness_scale;
   const bool touching = s.gap < 0.0;
-  const double normal = normal_force(kn, s.p, s.gap, s.normal_velocity);
+  const double normal = normal_force(m, kn, s.p, s.gap, s.normal_velocity);
   const double mu = friction_coefficient<Law>(m, s.p, std::abs(s.slip_velocity), s.slipping > 0.5);
   const double limit = mu * normal;
   const double trial = s.shear_spring - ks * s.slip_velocity * m.time_step;
@@ -133,7 +133,7 @@ template <FrictionLaw Law>
 Vector3<double> law_3d(const Model& m, const Situation& s, ContactState3D<double>& state) {
   const double ks = m.corner_shear_stiffness[0];
   const bool touching = s.gap < 0.0;
-  const double normal = normal_force(m.corner_normal_stiffness[0], s.p, s.gap, s.normal_velocity);
+  const double normal = normal_force(m, m.corner_normal_stiffness[0], s.p, s.gap, s.normal_velocity);
   const double slip_speed = std::sqrt(s.slip_velocity * s.slip_velocity + s.slip_z * s.slip_z);
   const double limit = friction_coefficient<Law>(m, s.p, slip_speed, state.slipping > 0.5) * normal;
   const bool had = state.stiffness > 0.0;
@@ -281,7 +281,7 @@ void expect_the_law_3d(int table) {
     for (std::size_t l = 0; l < kWidth; ++l) {
       lanes[l] = &all[i + l];
       const Situation& s = *lanes[l];
-      const double normal = normal_force(m.corner_normal_stiffness[0], s.p, s.gap, s.normal_velocity);
+      const double normal = normal_force(m, m.corner_normal_stiffness[0], s.p, s.gap, s.normal_velocity);
       ContactState3D<double> got_state = state_3d(s), want_state = state_3d(s);
       const Vector3<double> got =
           shear_contact<Law>(m, s.p, s.gap < 0.0, true, normal, m.corner_shear_stiffness[0],
@@ -296,7 +296,7 @@ void expect_the_law_3d(int table) {
     }
     const LaneParameters<Wide> p = gather_parameters<Wide>(lanes);
     const Wide gap = wide_of(lanes, [](const Situation& s) { return s.gap; });
-    const Wide normal = normal_force(Wide(m.corner_normal_stiffness[0]), p, gap,
+    const Wide normal = normal_force(m, Wide(m.corner_normal_stiffness[0]), p, gap,
                                      wide_of(lanes, [](const Situation& s) { return s.normal_velocity; }));
     const Wide slip_x = wide_of(lanes, [](const Situation& s) { return s.slip_velocity; });
     const Wide slip_z = wide_of(lanes, [](const Situation& s) { return s.slip_z; });
