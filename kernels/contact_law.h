@@ -33,16 +33,18 @@
 // The normal law is a model form (Model::normal_law). Beside the paper's linear spring-dashpot,
 // a Hertz spring with Hunt & Crossley's damper (Hunt & Crossley 1975; Gilardi & Sharf 2002,
 // Mech. Mach. Theory 37):
-//   F_n = max(0, K d sqrt(d/d_H) (1 - lambda v_n) - beta K_t v_n),   K_t = (3/2) K sqrt(d/d_H)
+//   F_n = max(0, K d sqrt(d/d_H) (1 - lambda v_n))
 // The spring is K_H d^(3/2) with K_H = K / sqrt(d_H): it pushes as the linear one does at
 // d = d_H (Model::hertz_overlap), stiffens as the contact grows and starts from zero stiffness,
 // so the force rises continuously at touch and falls to zero at separation. Its energy is
-// (2/5) K d^2 sqrt(d/d_H). Hunt & Crossley's damper lambda F_spring v_n loses, in a normal
-// impact at speed u_in with beta = 0, exactly what makes the rebound speed u_out solve
+// (2/5) K d^2 sqrt(d/d_H). All its damping is Hunt & Crossley's damper lambda F_spring v_n,
+// proportional to the spring force: the lane's impact_damping, which under this law also
+// carries the paper's damping (model/build.h, hunt_crossley_damper: beta K_t at rest, K_t the
+// tangent stiffness, becomes lambda m g). In a normal impact at speed u_in it loses exactly what
+// makes the rebound speed u_out solve
 //   G(-u_out) = G(u_in),   G(u) = u / lambda - ln(1 + lambda u) / lambda^2
 // (m u du / (1 + lambda u) = -K_H d^(3/2) dd integrated from touch to separation), so
-// e = u_out / u_in ~ 1 - (2/3) lambda u_in, independent of the stiffness. The paper's
-// stiffness-proportional damping beta acts on the tangent stiffness K_t, which is zero at touch.
+// e = u_out / u_in ~ 1 - (2/3) lambda u_in, independent of the stiffness.
 // The soft floor layer multiplies the spring by its bilinear factor under either law.
 
 #include "kernels/friction_law.h"
@@ -80,10 +82,7 @@ CASKDEM_HOST_DEVICE inline T normal_force(const Model& model, const T& normal_st
   if (model.normal_law == NormalLaw::hunt_crossley) {
     const T hertz = lane::sqrt(overlap / broadcast<T>(model.hertz_overlap));  // sqrt(d / d_H)
     const T spring_force = normal_stiffness * spring_extension * hertz;
-    const T tangent_stiffness = broadcast<T>(1.5) * normal_stiffness * hertz;
-    const T damping_force =
-        (lane_parameters.impact_damping * spring_force + lane_parameters.damping_beta * tangent_stiffness) *
-        normal_velocity;
+    const T damping_force = lane_parameters.impact_damping * spring_force * normal_velocity;
     // No tension, as for the linear law.
     return select(touching, lane::max(spring_force - damping_force, zero), zero);
   }

@@ -24,7 +24,7 @@ struct LaneParameters {
   T stiffness_scale;       // factor on every contact spring constant
   // Mechanisms beyond the source paper's model (src/diagnosis/mechanisms.h); zero, or one
   // for floor_soft_ratio, leaves the paper's model.
-  T impact_damping;        // lambda, s/m: Hunt-Crossley damper -lambda K d v_n, loss growing with impact speed
+  T impact_damping;        // lambda, s/m: Hunt-Crossley damper, loss growing with impact speed (kernels/contact_law.h)
   T floor_soft_ratio;      // s: a floor layer of stiffness s K over the first floor_soft_depth of overlap
   T floor_soft_depth;      // d0, m
   T base_camber;           // c, m: the base-centre corner (Model::camber_corner) sits c below the base corners

@@ -29,7 +29,7 @@ enum class FrictionLaw : std::int32_t {
 // Hertz spring K d sqrt(d / d_H) with Hunt & Crossley's damper, a model form of its own.
 enum class NormalLaw : std::int32_t {
   linear = 0,         // K d - beta K v_n
-  hunt_crossley = 1,  // K d sqrt(d / d_H) (1 - lambda v_n) - beta (3/2) K sqrt(d / d_H) v_n
+  hunt_crossley = 1,  // K d sqrt(d / d_H) (1 - lambda v_n)
 };
 
 // Which of the spring-slider's velocity-dependent terms read the velocity at the whole step t_n

@@ -79,7 +79,10 @@ void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const
               << " motions)\n";
     std::cout << "time step       " << plan.model().time_step << " s (" << slider_name_of(plan.model().whole_step_terms)
               << " slider), alpha " << plan.stability_angle() << " rad\n";
-    std::cout << "contact         " << contact_law_text(plan.model(), plan.spec().base.parameters.impact_damping) << "\n";
+    std::cout << "contact         " << contact_law_text(plan.model(), plan.spec().base.parameters.impact_damping,
+                                                          plan.model().normal_law == NormalLaw::hunt_crossley
+                                                              ? " + each realisation's damping ratio's share"
+                                                              : "") << "\n";
     if (device) {
       const std::int64_t lanes =
           std::min<std::int64_t>(plan.size(), device->lane_capacity(plan.three_d() ? 3 : 2, plan.model().friction_law));

@@ -65,7 +65,7 @@ void print_summary(std::ostream& out, const RunReport& report) {
   out << "time step       " << s.time_step << " s (" << s.steps << " steps, " << report.wall_seconds << " s wall), "
       << slider_name_of(report.model.whole_step_terms) << " slider\n";
   out << "alpha           " << s.stability_angle << " rad (" << units::rad_to_deg(s.stability_angle) << " deg)\n";
-  out << "contact         " << contact_law_text(report.model, report.source ? report.source->parameters.impact_damping : 0.0) << ", K_n " << f.total_normal_stiffness << " N/m, static penetration " << f.static_penetration
+  out << "contact         " << contact_law_text(report.model, f.normal_damper) << ", K_n " << f.total_normal_stiffness << " N/m, static penetration " << f.static_penetration
       << " m, beta " << f.damping_beta << " s\n";
   out << "max |theta|     " << s.max_abs_rotation << " rad = " << s.max_rotation_ratio << " alpha\n";
   out << "sliding         max " << s.max_abs_slide << " m, residual " << s.residual_slide << " m\n";
@@ -173,7 +173,7 @@ void write_run_hdf5(const std::filesystem::path& file, const RunReport& report) 
   model.attribute("slider", slider_name_of(m.whole_step_terms));
   model.attribute("normal_law", normal_law_name(m.normal_law));
   if (m.normal_law == NormalLaw::hunt_crossley) model.attribute("hertz_overlap_m", m.hertz_overlap);
-  if (report.source) model.attribute("impact_damping_s_m", report.source->parameters.impact_damping);
+  model.attribute("impact_damping_s_m", report.facts.normal_damper);
   if (report.source) {
     model.attribute("mass_kg", report.source->parameters.mass);
     model.attribute("inertia_kg_m2", report.source->parameters.inertia);

@@ -55,7 +55,8 @@ void print_summary3d(std::ostream& out, const RunReport3D& report) {
   out << "case            " << (report.source ? report.source->title : "") << " (3D)\n";
   out << "time step       " << s.time_step << " s (" << report.wall_seconds << " s wall), "
       << slider_name_of(report.model.model.whole_step_terms) << " slider, "
-      << contact_law_text(report.model.model, report.parameters.impact_damping) << "\n";
+      << contact_law_text(report.model.model, lane_parameters3d(report.model, report.parameters).impact_damping)
+      << "\n";
   out << "alpha           " << s.stability_angle << " rad (" << units::rad_to_deg(s.stability_angle) << " deg)\n";
   out << "motion          incidence " << units::rad_to_deg(report.motions.incidence) << " deg, scale "
       << report.motions.scale_factor;
@@ -167,7 +168,7 @@ void write_run_hdf5_3d(const std::filesystem::path& file, const RunReport3D& rep
   if (report.model.model.normal_law == NormalLaw::hunt_crossley) {
     model.attribute("hertz_overlap_m", report.model.model.hertz_overlap);
   }
-  model.attribute("impact_damping_s_m", report.parameters.impact_damping);
+  model.attribute("impact_damping_s_m", lane_parameters3d(report.model, report.parameters).impact_damping);
 
   if (!h.time.empty()) {
     hdf5::Group history = root.group("history");

@@ -54,6 +54,7 @@ ModelFacts model_facts(const Model& model, const ModelSpec& spec, const Realisat
   f.static_penetration = overlap_carrying(model, f.total_normal_stiffness, p.mass * model.gravity);
   f.natural_frequency = std::sqrt(f.total_normal_stiffness / p.mass);
   f.damping_beta = damping_beta(model, p);
+  f.normal_damper = p.impact_damping + hunt_crossley_damper(model, f.damping_beta, f.total_normal_stiffness, p.mass);
   f.stability_angle_positive = stability_angle(spec.section, +1);
   f.stability_angle_negative = stability_angle(spec.section, -1);
   // Upper bound on the highest rigid-body frequency on the springs: trace of M^-1 K, with the
@@ -275,7 +276,8 @@ LaneParameters<double> lane_parameters(const Model& model, const RealisationPara
     throw std::invalid_argument("a base camber needs a model with a base-centre contact");
   }
   if (!(p.wobble_damping >= 0.0)) throw std::invalid_argument("the wobble damping must be non-negative");
-  lane.impact_damping = p.impact_damping;
+  lane.impact_damping = p.impact_damping + hunt_crossley_damper(model, lane.damping_beta,
+                                                                 total_standing_normal_stiffness(model) * p.stiffness_scale, p.mass);
   lane.floor_soft_ratio = p.floor_soft_ratio;
   lane.floor_soft_depth = p.floor_soft_depth;
   lane.base_camber = p.base_camber;
@@ -316,14 +318,23 @@ std::string normal_law_name(NormalLaw law) {
   return "unknown";
 }
 
-std::string contact_law_text(const Model& model, double impact_damping) {
+std::string contact_law_text(const Model& model, double impact_damping, const std::string& damper_note) {
   std::string text = normal_law_name(model.normal_law) + " law";
   if (model.normal_law == NormalLaw::hunt_crossley) {
-    text += " (d_H " + number_text(model.hertz_overlap) + " m, damper " + number_text(impact_damping) + " s/m)";
+    text += " (d_H " + number_text(model.hertz_overlap) + " m, damper " + number_text(impact_damping) + " s/m" +
+            damper_note + ")";
   } else if (impact_damping > 0.0) {
-    text += " (impact damper " + number_text(impact_damping) + " s/m)";
+    text += " (impact damper " + number_text(impact_damping) + " s/m" + damper_note + ")";
   }
   return text;
+}
+
+double hunt_crossley_damper(const Model& model, double beta, double standing_stiffness, double mass) {
+  if (model.normal_law != NormalLaw::hunt_crossley) return 0.0;
+  const double weight = mass * model.gravity;
+  const double rest = overlap_carrying(model, standing_stiffness, weight);
+  const double tangent = 1.5 * standing_stiffness * std::sqrt(rest / model.hertz_overlap);
+  return beta * tangent / weight;
 }
 
 double overlap_carrying(const Model& model, double stiffness, double force) {

@@ -100,6 +100,7 @@ struct ModelFacts {
   double static_penetration = 0.0;      // m g / K
   double natural_frequency = 0.0;       // sqrt(K / m), rad/s
   double damping_beta = 0.0;            // s
+  double normal_damper = 0.0;           // s/m, Hunt & Crossley's lambda of the normal law (the damping's share included)
   double stability_angle_positive = 0.0;  // rad
   double stability_angle_negative = 0.0;
   double highest_frequency = 0.0;       // bound on the rigid-body modes on their springs, rad/s
@@ -116,11 +117,18 @@ double total_standing_normal_stiffness(const Model& model);  // sum over corners
 const std::vector<std::string>& normal_law_names();
 NormalLaw normal_law_of(const std::string& name);  // throws std::invalid_argument naming the choices
 std::string normal_law_name(NormalLaw law);
-// "linear law", or "hunt-crossley law (d_H 7.3e-06 m, damper 2 s/m)": what a printout says of the contact.
-std::string contact_law_text(const Model& model, double impact_damping);
+// "linear law", or "hunt-crossley law (d_H 7.3e-06 m, damper 2 s/m)": what a printout says of
+// the contact; `damper_note` follows the damper's value ("" or, say, " + each realisation's damping").
+std::string contact_law_text(const Model& model, double impact_damping, const std::string& damper_note = "");
 // The overlap at which a contact of spring constant K carries the force F at rest under the
 // model's law without soft layer: F / K (linear), (F / K)^(2/3) d_H^(1/3) (Hunt-Crossley).
 double overlap_carrying(const Model& model, double stiffness, double force);
+// Under the Hunt-Crossley law the paper's damping acts through Hunt & Crossley's damper: the
+// dashpot beta K_t of the cask at rest (K_t = (3/2) K sqrt(d_r / d_H), the tangent stiffness of
+// its standing contacts K at their rest overlap d_r) equals lambda m g, the damper's coefficient
+// there, so lambda = beta K_t / (m g) and the standing cask is damped as on the linear law's
+// dashpot with its tangent stiffness. 0 under the linear law.
+double hunt_crossley_damper(const Model& model, double beta, double standing_stiffness, double mass);
 
 // Standing upright at rest, its height in vertical equilibrium on its springs (m g / K for
 // linear springs; solved for a soft floor layer, a convex base or the Hunt-Crossley law).

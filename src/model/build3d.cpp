@@ -155,6 +155,8 @@ LaneParameters<double> lane_parameters3d(const Model3D& model, const Realisation
   q.damping_frequency = 1.0;  // any: the 2D beta is replaced below
   LaneParameters<double> lane = lane_parameters(two_d, q);
   lane.damping_beta = damping_beta3d(model, p);
+  lane.impact_damping = p.impact_damping + hunt_crossley_damper(model.model, lane.damping_beta,
+                                                                standing_stiffness(model.contacts) * p.stiffness_scale, p.mass);
   return lane;
 }
 

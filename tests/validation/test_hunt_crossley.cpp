@@ -8,7 +8,8 @@
 //    (Johnson, Contact Mechanics, ch. 11, for the Hertz exponent 3/2);
 //  - damped: the rebound speed solves G(-u_out) = G(u) with G(v) = v/lambda - ln(1 + lambda v)/lambda^2,
 //    whatever the stiffness (Hunt & Crossley 1975), on the 2D corners and on the 3D base's rim
-//    and centre alike; the step's error falls as the step does;
+//    and centre alike; the step's error falls as the step does; a damping ratio acts as its
+//    share of lambda (beta K_t / (m g)) and the relation holds at the sum;
 //  - at rest it carries the weight at (m g / K)^(2/3) d_H^(1/3), and the nominal cask at d_H;
 //  - the linear law is unchanged by the model form's existence: a Hunt-Crossley cask at the
 //    same K rocks differently, and the linear model gives the bits it gave.
@@ -119,6 +120,17 @@ TEST(HuntCrossley, DampedImpactReboundsAsTheLawsRestitutionRelationSays) {
       }
     }
   }
+  // The paper's damping ratio acts through the damper alone: its share, beta K_t / (m g) at rest,
+  // adds to lambda, and the rebound is the relation's at the sum.
+  Case damped = hunt_crossley_cask(0.5, 0.05);
+  const Model damped_model = build_model(damped.model, damped.parameters);
+  const LaneParameters<double> damped_lane = lane_parameters(damped_model, damped.parameters);
+  const double weight = damped.parameters.mass * damped_model.gravity;
+  const double tangent = 1.5 * total_standing_normal_stiffness(damped_model);  // at rest, d = d_H
+  EXPECT_NEAR(damped_lane.impact_damping, 0.5 + damped_lane.damping_beta * tangent / weight, 1e-12);
+  EXPECT_GT(damped_lane.impact_damping, 0.6) << "the damping ratio's share is not negligible here";
+  EXPECT_NEAR(drop2d(damped_model, damped_lane, 0.3).rebound_speed / exact_rebound(damped_lane.impact_damping, 0.3),
+              1.0, 1e-4);
   // Independent of the stiffness: a contact four times softer rebounds alike.
   Case soft = hunt_crossley_cask(3.0);
   soft.model.stiffness.normal *= 0.25;
