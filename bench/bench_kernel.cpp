@@ -117,6 +117,21 @@ void footprint(benchmark::State& state, InstructionSet isa, int points) {
   state.counters["lane_steps_per_s"] = benchmark::Counter(double(kLanes) * kSteps * state.iterations(), benchmark::Counter::kIsRate);
 }
 
+// What the Hunt-Crossley normal law costs (kernels/contact_law.h): the same work with the linear
+// spring-dashpot or the Hertz spring (a square root per contact) and Hunt & Crossley's damper.
+void normal_law(benchmark::State& state, InstructionSet isa, NormalLaw law) {
+  if (!instruction_set_available(isa)) {
+    state.SkipWithError((instruction_set_name(isa) + " is not available on this machine").c_str());
+    return;
+  }
+  Case c = paper_model(FrictionLaw::exponential);
+  c.model.normal_law = law;
+  if (law == NormalLaw::hunt_crossley) c.parameters.impact_damping = 2.0;  // s/m
+  const Model model = build_model(c.model, c.parameters);
+  advance_blocks(state, isa, model, c.parameters);
+  state.counters["lane_steps_per_s"] = benchmark::Counter(double(kLanes) * kSteps * state.iterations(), benchmark::Counter::kIsRate);
+}
+
 // The scalar deterministic code (the reference path, with its time-history bookkeeping off)
 // on the same work: one realisation after another.
 void deterministic(benchmark::State& state, FrictionLaw law) {
@@ -167,6 +182,14 @@ BENCHMARK_CAPTURE(footprint, avx2_two_corners, InstructionSet::avx2, 0)->Unit(be
 BENCHMARK_CAPTURE(footprint, avx2_distributed_9, InstructionSet::avx2, 9)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(footprint, avx512f_two_corners, InstructionSet::avx512f, 0)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(footprint, avx512f_distributed_9, InstructionSet::avx512f, 9)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(normal_law, scalar_linear, InstructionSet::scalar, NormalLaw::linear)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(normal_law, scalar_hunt_crossley, InstructionSet::scalar, NormalLaw::hunt_crossley)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(normal_law, sse2_linear, InstructionSet::sse2, NormalLaw::linear)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(normal_law, sse2_hunt_crossley, InstructionSet::sse2, NormalLaw::hunt_crossley)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(normal_law, avx2_linear, InstructionSet::avx2, NormalLaw::linear)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(normal_law, avx2_hunt_crossley, InstructionSet::avx2, NormalLaw::hunt_crossley)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(normal_law, avx512f_linear, InstructionSet::avx512f, NormalLaw::linear)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(normal_law, avx512f_hunt_crossley, InstructionSet::avx512f, NormalLaw::hunt_crossley)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(deterministic, exponential, FrictionLaw::exponential)->Unit(benchmark::kMillisecond);
 BENCHMARK(threads)->Threads(1)->Threads(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 

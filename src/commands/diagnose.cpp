@@ -116,7 +116,7 @@ void add_diagnose(CLI::App& app) {
     struct Options {
       std::string directory, out;
       int threads = 0;
-      bool quiet = false, no_plot = false, no_second_effect = false, no_plan = false;
+      bool quiet = false, no_plot = false, no_second_effect = false, no_plan = false, normal_laws = false;
       std::string uncertainty = "jackknife";
     };
     auto options = std::make_shared<Options>();
@@ -129,6 +129,9 @@ void add_diagnose(CLI::App& app) {
     cmd->add_flag("--no-plot", options->no_plot, "Do not make the PNGs");
     cmd->add_flag("--no-plan", options->no_plan,
                   "Do not look for the table tests that would tell the leading candidates apart (plan-test)");
+    cmd->add_flag("--normal-laws", options->normal_laws,
+                  "Also calibrate on the other normal law (linear, Hunt-Crossley) and keep the one the held-out tests "
+                  "prefer (twice the calibrations)");
     cmd->add_flag("--no-second-effect", options->no_second_effect,
                   "Do not fit the other mechanisms on top of the cause (faster; the cause is the same)");
     add_uncertainty_option(cmd, options->uncertainty, ", for the baseline and the cause");
@@ -140,13 +143,16 @@ void add_diagnose(CLI::App& app) {
       prepare_output_directory(out);
       diagnosis::DiagnosisOptions run_options = options_for(options->threads, options->quiet, options->uncertainty);
       run_options.look_for_second_effect = !options->no_second_effect;
+      run_options.compare_normal_laws = options->normal_laws;
       const diagnosis::Diagnosis d = diagnosis::diagnose(set, run_options);
       std::optional<diagnosis::TestPlan> plan;
       if (!options->no_plan)
         plan = diagnosis::plan_tests(set, d.specimen, diagnosis::leading_candidates(d), run_options);
       std::cout << "cause           " << d.cause << "\n";
+      const bool laws = diagnosis::laws_compared(d.footprints);
       for (const diagnosis::FootprintScore& f : d.footprints) {
-        std::cout << "footprint       " << std::left << std::setw(12) << f.footprint << " held-out error "
+        std::cout << (laws ? "model form      " : "footprint       ") << std::left << std::setw(laws ? 30 : 12)
+                  << diagnosis::form_label(f, laws) << " held-out error "
                   << std::setprecision(3) << f.heldout_error << ", gain " << f.heldout_gain
                   << (f.stated ? " (stated)" : "") << (f.chosen ? " chosen" : "") << "\n";
       }

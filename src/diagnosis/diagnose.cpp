@@ -228,25 +228,50 @@ std::vector<SimulatedHistory> fitted_histories(const MeasuredSet& set, const Mod
   return out;
 }
 
+std::string form_label(const FootprintScore& score, bool laws_compared) {
+  if (!laws_compared) return score.footprint;
+  return (score.footprint.empty() ? std::string() : score.footprint + ", ") + score.normal_law + " law";
+}
+
+bool laws_compared(const std::vector<FootprintScore>& forms) {
+  return std::any_of(forms.begin(), forms.end(),
+                     [&](const FootprintScore& f) { return f.normal_law != forms.front().normal_law; });
+}
+
 namespace {
 
-ModelFit fit_baseline(const MeasuredSet& set, const Yardstick& yardstick, const DiagnosisOptions& options) {
+// Searched from the specimen's nominal values and from any `also_from` (another form's fit).
+ModelFit fit_baseline(const MeasuredSet& set, const Yardstick& yardstick, const DiagnosisOptions& options,
+                      const std::vector<std::vector<double>>& also_from = {}) {
   const ModelVariant baseline(set.specimen, {}, set.vertical_measured);
   say(options, "fitting the baseline (friction, damping ratio, stiffness scale) on " +
                    std::to_string(set.training.size()) + " training tests");
-  return fit_variant(set, yardstick, baseline, {baseline.reference()}, options);
+  std::vector<std::vector<double>> starts = {baseline.reference()};
+  starts.insert(starts.end(), also_from.begin(), also_from.end());
+  return fit_variant(set, yardstick, baseline, starts, options);
 }
 
-// The baseline calibrated on each footprint rule of a cylindrical specimen (footprint.h). The
-// rules' held-out tests are judged at common tolerances (the stated rule's references, each
-// held-out tolerance the largest of the rules' own), and another rule replaces the stated one
-// only when it predicts them by at least minimum_gain better: the analyst's rule stands unless
-// the data speak against it.
+// The baseline calibrated on each model form: each footprint rule of a cylindrical specimen
+// (footprint.h), and with DiagnosisOptions::compare_normal_laws each normal law. The forms'
+// held-out tests are judged at common tolerances (the stated form's references, each held-out
+// tolerance the largest of the forms' own), and another form replaces the stated one only when
+// it predicts them by at least minimum_gain better: the analyst's form stands unless the data
+// speak against it.
+struct ModelForm {
+  std::optional<Footprint> footprint;  // none: a polygon section, as stated
+  NormalLaw normal_law = NormalLaw::linear;
+};
+
+std::string form_name(const ModelForm& form) {
+  return (form.footprint ? "footprint " + footprint_name(*form.footprint) + ", " : std::string()) +
+         normal_law_name(form.normal_law) + " normal law";
+}
+
 struct FootprintChoice {
-  std::vector<MeasuredSet> sets;  // the data on each rule tried
+  std::vector<MeasuredSet> sets;  // the data on each form tried
   std::vector<Yardstick> yardsticks;
   std::vector<ModelFit> fits;  // the baseline calibrated on each
-  std::vector<Footprint> tried;
+  std::vector<ModelForm> tried;
   std::size_t stated = 0, chosen = 0;
   std::vector<FootprintScore> scores;
 };
@@ -268,7 +293,8 @@ std::vector<FootprintScore> footprint_scores(const MeasuredSet& given, const Foo
     Judged judged;
     (void)objective_over(c.sets[i], common, variant, given.heldout, {c.fits[i].fit.best}, options, &judged);
     FootprintScore score;
-    score.footprint = footprint_name(c.tried[i]);
+    score.footprint = c.tried[i].footprint ? footprint_name(*c.tried[i].footprint) : "";
+    score.normal_law = normal_law_name(c.tried[i].normal_law);
     score.stated = i == c.stated;
     score.heldout_error = error_of(judged.loss, common, given.heldout);
     score.baseline = c.fits[i];
@@ -281,24 +307,48 @@ std::vector<FootprintScore> footprint_scores(const MeasuredSet& given, const Foo
   return scores;
 }
 
+// The forms to try: every footprint rule of a cylinder (else the section as stated) times every
+// normal law where asked (else the stated one), each rule's laws one after the other.
+std::vector<ModelForm> forms_to_try(const Case& specimen, const DiagnosisOptions& options) {
+  std::vector<std::optional<Footprint>> footprints = {footprint_of(specimen)};
+  if (options.choose_footprint && footprint_of(specimen)) footprints.assign(all_footprints().begin(), all_footprints().end());
+  std::vector<NormalLaw> laws = {specimen.model.normal_law};
+  if (options.compare_normal_laws) laws = {NormalLaw::linear, NormalLaw::hunt_crossley};
+  std::vector<ModelForm> forms;
+  for (const std::optional<Footprint>& f : footprints) {
+    for (NormalLaw law : laws) forms.push_back({f, law});
+  }
+  return forms;
+}
+
 FootprintChoice choose_footprint(const MeasuredSet& given, const DiagnosisOptions& options) {
-  const Footprint stated = *footprint_of(given.specimen);
+  const ModelForm stated{footprint_of(given.specimen), given.specimen.model.normal_law};
   FootprintChoice choice;
-  for (Footprint f : all_footprints()) {
+  for (const ModelForm& form : forms_to_try(given.specimen, options)) {
     MeasuredSet s = given;
+    const std::string name = form_name(form);
     try {
-      s.specimen = with_footprint(given.specimen, f);
+      if (form.footprint) s.specimen = with_footprint(given.specimen, *form.footprint);
+      s.specimen.model.normal_law = form.normal_law;
       (void)ModelVariant(s.specimen, {}, s.vertical_measured);
     } catch (const std::invalid_argument& e) {  // a rule this cask cannot stand on (its centre of mass beyond r/2)
-      say(options, "footprint " + footprint_name(f) + " not tried: " + e.what());
+      say(options, name + " not tried: " + e.what());
       continue;
     }
-    if (f == stated) choice.stated = choice.sets.size();
-    choice.tried.push_back(f);
-    say(options, "footprint " + footprint_name(f) + ": judging how predictable each test is");
+    if (form.footprint == stated.footprint && form.normal_law == stated.normal_law) choice.stated = choice.sets.size();
+    choice.tried.push_back(form);
+    say(options, name + ": judging how predictable each test is");
     choice.yardsticks.push_back(yardstick_of(s, options));
-    say(options, "footprint " + footprint_name(f) + ": fitting the baseline");
-    choice.fits.push_back(fit_baseline(s, choice.yardsticks.back(), options));
+    say(options, name + ": fitting the baseline");
+    // The second law on a footprint is searched also from the first law's fit there: both
+    // calibrate the same cask, and the search from the nominal values alone may end in
+    // another basin.
+    std::vector<std::vector<double>> also_from;
+    if (choice.tried.size() >= 2 &&
+        choice.tried[choice.tried.size() - 2].footprint == form.footprint) {
+      also_from.push_back(choice.fits.back().fit.best);
+    }
+    choice.fits.push_back(fit_baseline(s, choice.yardsticks.back(), options, also_from));
     choice.sets.push_back(std::move(s));
   }
   choice.scores = footprint_scores(given, choice, options);
@@ -517,14 +567,20 @@ Diagnosis diagnose(const MeasuredSet& given, const DiagnosisOptions& options) {
   Diagnosis d;
   say(options, "judging how predictable each test is (" + std::to_string(kPredictabilityRealisations) +
                    " simulations per test with fresh input noise)");
-  // The footprint first: the mechanisms are fitted on the rule the held-out tests prefer.
+  // The model form first: the mechanisms are fitted on the footprint rule and normal law the
+  // held-out tests prefer.
   std::optional<FootprintChoice> footprint;
-  if (options.choose_footprint && footprint_of(given.specimen)) footprint = choose_footprint(given, options);
+  if ((options.choose_footprint && footprint_of(given.specimen)) || options.compare_normal_laws) {
+    footprint = choose_footprint(given, options);
+  }
   const MeasuredSet& set = footprint ? footprint->sets[footprint->chosen] : given;
   const Yardstick yardstick = footprint ? footprint->yardsticks[footprint->chosen] : yardstick_of(set, options);
   d.baseline = footprint ? footprint->fits[footprint->chosen] : fit_baseline(set, yardstick, options);
-  d.footprint_changed = footprint && footprint->chosen != footprint->stated;
+  d.footprint_changed =
+      footprint && footprint->tried[footprint->chosen].footprint != footprint->tried[footprint->stated].footprint;
+  d.normal_law_changed = set.specimen.model.normal_law != given.specimen.model.normal_law;
   if (const std::optional<Footprint> f = footprint_of(set.specimen)) d.footprint = footprint_name(*f);
+  d.normal_law = normal_law_name(set.specimen.model.normal_law);
   d.specimen = set.specimen;
   const ModelVariant baseline_variant(set.specimen, {}, set.vertical_measured);
   d.structure = residual_structure(set, yardstick.references, d.baseline, baseline_variant.model(),
@@ -586,6 +642,7 @@ Diagnosis diagnose(const MeasuredSet& given, const DiagnosisOptions& options) {
   }
   if (cause != d.ranking.end()) d.cause = mechanism_name(cause->mechanism);
   else if (d.footprint_changed) d.cause = "footprint";
+  else if (d.normal_law_changed) d.cause = "normal_law";
   else if (!d.baseline.adequacy.adequate) d.cause = "unexplained";
   d.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return d;

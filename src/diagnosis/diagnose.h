@@ -67,6 +67,10 @@ struct DiagnosisOptions {
   // A cylindrical specimen's baseline is calibrated on every footprint rule (footprint.h) and
   // the one the held-out tests prefer by at least minimum_gain replaces the stated one.
   bool choose_footprint = true;
+  // The baseline is also calibrated on the other normal law (kernels/contact_law.h: linear or
+  // Hunt-Crossley), on each footprint tried, and the form the held-out tests prefer by at least
+  // minimum_gain replaces the stated one. Off by default: it doubles the calibrations.
+  bool compare_normal_laws = false;
   // Standard errors of the baseline, and of the cause if there is one, raised to the jackknife's
   // where larger (refits without each training test; fitting.h). Costs a fit per training test.
   // Off here (the tests need no errors); the commands turn it on unless asked not to.
@@ -136,21 +140,32 @@ struct StructureRow {
 
 // The baseline calibrated on one footprint rule, judged on the held-out tests at tolerances
 // common to every rule tried.
+// One model form tried: a footprint rule (empty for a polygon section) and a normal law.
+struct FootprintScore;
+// "distributed", "distributed, hunt-crossley law" where the laws were compared, "hunt-crossley law".
+std::string form_label(const FootprintScore& score, bool laws_compared);
 struct FootprintScore {
   std::string footprint;       // footprint_name
-  bool stated = false;         // the specimen's own rule
+  std::string normal_law;      // normal_law_name
+  bool stated = false;         // the specimen's own rule and law
   bool chosen = false;
   double heldout_error = 0.0;
   double heldout_gain = 0.0;   // against the stated rule
   ModelFit baseline;
 };
 
+// Whether the diagnosis tried more than one normal law.
+bool laws_compared(const std::vector<FootprintScore>& forms);
+
 struct Diagnosis {
   // A mechanism's name; "footprint" when no mechanism is significant but another footprint rule
-  // fits better than the stated one; "unexplained" when the baseline misfits and nothing
+  // fits better than the stated one; "normal_law" likewise for the other normal law (with
+  // DiagnosisOptions::compare_normal_laws); "unexplained" when the baseline misfits and nothing
   // explains it; "none" when it fits within noise.
   std::string cause = "none";
   std::string footprint;                    // the rule the mechanisms were fitted on
+  std::string normal_law;                   // the normal law they were fitted on
+  bool normal_law_changed = false;          // another law than the stated one predicts the held-out tests better
   bool footprint_changed = false;           // it is not the specimen's stated rule
   std::vector<FootprintScore> footprints;   // every rule tried (empty: not a cylinder, or not asked)
   Case specimen;                            // the specimen the fits were made on (on the rule kept)

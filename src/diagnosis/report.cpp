@@ -292,9 +292,12 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   }
   j["footprint"] = d.footprint.empty() ? nlohmann::json(nullptr) : nlohmann::json(d.footprint);
   j["footprint_changed"] = d.footprint_changed;
+  j["normal_law"] = d.normal_law;
+  j["normal_law_changed"] = d.normal_law_changed;
   j["footprints"] = nlohmann::json::array();
   for (const FootprintScore& f : d.footprints) {
-    j["footprints"].push_back({{"footprint", f.footprint},
+    j["footprints"].push_back({{"footprint", f.footprint.empty() ? nlohmann::json(nullptr) : nlohmann::json(f.footprint)},
+                               {"normal_law", f.normal_law},
                                {"stated", f.stated},
                                {"chosen", f.chosen},
                                {"heldout_error", f.heldout_error},
@@ -347,6 +350,10 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
     md << "The calibrated baseline on the stated footprint predicts the held-out tests worse than on the `"
        << d.footprint << "` footprint, and no mechanism improves on that significantly: the stated footprint is the "
           "likely cause (below, \"Footprint\").\n\n";
+  } else if (d.cause == "normal_law") {
+    md << "The calibrated baseline with the stated normal law predicts the held-out tests worse than with the `"
+       << d.normal_law << "` law, and no mechanism improves on that significantly: the contact's normal law is the "
+          "likely cause (below, \"Model form\").\n\n";
   } else if (d.cause == "unexplained") {
     md << "No mechanism improves the prediction of the held-out tests significantly, but the calibrated baseline "
           "does not fit these data: the model misfits beyond noise, or reaches them only with implausible values, "
@@ -371,14 +378,24 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   }
   if (!any_issue) md << "No imperfections found in the test files.\n";
   if (!d.footprints.empty()) {
-    md << "\n## Footprint\n\nThe baseline calibrated on each footprint rule, the held-out tests judged at common "
-          "tolerances; another rule replaces the stated one when its held-out gain is at least 0.2. The chosen rule's "
-          "row is the calibrated baseline below (refitted from the mechanisms' fits where that fitted the training "
-          "tests better, and the rows judged again).\n\n"
-       << "| footprint | held-out error | gain against the stated rule | friction | damping ratio | stiffness scale | "
-          "adequate | |\n|---|---|---|---|---|---|---|---|\n";
+    const bool laws = laws_compared(d.footprints);
+    if (laws) {
+      md << "\n## Model form\n\nThe baseline calibrated on each footprint rule and each normal law (linear "
+            "spring-dashpot, Hunt-Crossley), the held-out tests judged at common tolerances; another form replaces the "
+            "stated one when its held-out gain is at least 0.2. The chosen form's row is the calibrated baseline "
+            "below (refitted from the mechanisms' fits where that fitted the training tests better, and the rows "
+            "judged again).\n\n"
+         << "| form | held-out error | gain against the stated form | friction | damping ratio | stiffness scale | ";
+    } else {
+      md << "\n## Footprint\n\nThe baseline calibrated on each footprint rule, the held-out tests judged at common "
+            "tolerances; another rule replaces the stated one when its held-out gain is at least 0.2. The chosen rule's "
+            "row is the calibrated baseline below (refitted from the mechanisms' fits where that fitted the training "
+            "tests better, and the rows judged again).\n\n"
+         << "| footprint | held-out error | gain against the stated rule | friction | damping ratio | stiffness scale | ";
+    }
+    md << "adequate | |\n|---|---|---|---|---|---|---|---|\n";
     for (const FootprintScore& f : d.footprints) {
-      md << "| " << f.footprint << (f.stated ? " (stated)" : "") << " | " << number(f.heldout_error, 3) << " | "
+      md << "| " << form_label(f, laws) << (f.stated ? " (stated)" : "") << " | " << number(f.heldout_error, 3) << " | "
          << number(f.heldout_gain, 3) << " | " << number(f.baseline.fit.best[0], 3) << " | "
          << number(f.baseline.fit.best[1], 3) << " | " << number(f.baseline.fit.best[2], 3) << " | "
          << (f.baseline.adequacy.adequate ? "yes" : "no") << " | " << (f.chosen ? "chosen" : "") << " |\n";
@@ -386,6 +403,7 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   }
   md << "\n## Calibrated baseline";
   if (!d.footprint.empty()) md << " (footprint: " << d.footprint << ")";
+  if (d.normal_law != "linear") md << " (normal law: " << d.normal_law << ")";
   md << "\n\n";
   if (!d.baseline.fit.uncertainty_method.empty()) {
     md << "Standard errors from the " << d.baseline.fit.uncertainty_method

@@ -123,7 +123,8 @@ safety_factor = 0.05   # 5 times the paper's step, for speed; a test near a rock
 SyntheticTruth write_synthetic_measured_set(const std::filesystem::path& directory, const SyntheticSpec& spec) {
   std::filesystem::create_directories(directory);
   std::ofstream(directory / "specimen.toml") << synthetic_specimen_text() << kSearch;
-  const Case specimen = read_specimen(directory / "specimen.toml", nullptr);
+  Case specimen = read_specimen(directory / "specimen.toml", nullptr);
+  specimen.model.normal_law = spec.normal_law;
   auto hidden = [&](Mechanism m) { return std::find(spec.hidden.begin(), spec.hidden.end(), m) != spec.hidden.end(); };
   const ModelVariant truth(specimen, spec.hidden, true);
 
@@ -185,6 +186,7 @@ SyntheticTruth write_synthetic_measured_set(const std::filesystem::path& directo
   for (std::size_t i = 0; i < truth.parameters().size(); ++i) out.parameters.emplace_back(truth.parameters()[i].name, x[i]);
   nlohmann::json j;
   j["hidden"] = out.hidden;
+  j["normal_law"] = normal_law_name(spec.normal_law);
   for (const auto& [name, value] : out.parameters) j["parameters"][name] = value;
   j["seed"] = spec.seed;
   j["noise"] = {{"rotation_rad", spec.rotation_noise}, {"slide_m", spec.slide_noise}, {"table_m_s2", spec.table_noise}};

@@ -31,6 +31,9 @@ struct SyntheticSpec {
   double rotation_noise = 2e-4;  // rad, standard deviation
   double slide_noise = 1e-4;     // m
   double table_noise = 0.003;    // m/s^2 (0.3 mg: a shaking-table accelerometer's noise floor)
+  // The contact's normal law the data are made with; specimen.toml states the linear one
+  // whatever this is (a wrong model form, as a footprint rule can be).
+  NormalLaw normal_law = NormalLaw::linear;
 };
 
 struct SyntheticTruth {

@@ -124,6 +124,7 @@ TEST(DecisionInvariants, TheAnswerFollowsItsStatedRules) {
   } else {
     EXPECT_TRUE(d.second_ranking.empty());
     EXPECT_EQ(d.cause, d.footprint_changed                ? "footprint"
+                       : d.normal_law_changed           ? "normal_law"
                        : !d.baseline.adequacy.adequate ? "unexplained"
                                                        : "none");
   }

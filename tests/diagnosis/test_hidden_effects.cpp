@@ -107,11 +107,13 @@ namespace {
 // With `report`, diagnosis.json and report.md are written there too (no plots).
 Diagnosis diagnose_synthetic(const std::vector<Mechanism>& hidden, std::uint64_t seed, bool second_effect,
                              const std::string& stated_rule = "gyration",
-                             const std::filesystem::path& report = {}) {
+                             const std::filesystem::path& report = {},
+                             NormalLaw data_law = NormalLaw::linear, bool compare_normal_laws = false) {
   const testing::TestDirectory directory;
   SyntheticSpec spec;
   spec.hidden = hidden;
   spec.seed = seed;
+  spec.normal_law = data_law;
   write_synthetic_measured_set(directory.path(), spec);
   if (stated_rule != "gyration") {  // the data's own rule; the specimen file states another
     const std::filesystem::path file = directory.path() / "specimen.toml";
@@ -125,6 +127,7 @@ Diagnosis diagnose_synthetic(const std::vector<Mechanism>& hidden, std::uint64_t
   DiagnosisOptions options;
   options.threads = 2;
   options.look_for_second_effect = second_effect;
+  options.compare_normal_laws = compare_normal_laws;
   Diagnosis d = diagnose(set, options);
   if (!report.empty()) write_diagnosis(report, set, d, options.isa, false);
   return d;
@@ -225,6 +228,25 @@ TEST(HiddenEffect, AWrongFootprintRuleIsNamed) {
   EXPECT_EQ(d.cause, "footprint");
   EXPECT_EQ(d.footprint, "gyration");
   EXPECT_TRUE(d.footprint_changed);
+}
+
+// The contact's normal law as a model form: data made with the Hunt-Crossley law, the specimen
+// file stating the linear one, are diagnosed on the law they came from, and data made with the
+// linear law keep it, when the diagnosis compares the laws (DiagnosisOptions::compare_normal_laws).
+TEST(HiddenEffect, TheNormalLawTheDataCameFromIsKept) {
+  const Diagnosis hertz = diagnose_synthetic({}, 109, false, "gyration", {}, NormalLaw::hunt_crossley, true);
+  ASSERT_EQ(hertz.footprints.size(), 6u) << "three footprint rules times two laws";
+  for (const FootprintScore& f : hertz.footprints) {
+    RecordProperty("heldout_error_" + form_label(f, true), std::to_string(f.heldout_error));
+  }
+  RecordProperty("cause", hertz.cause);
+  EXPECT_EQ(hertz.normal_law, "hunt-crossley");
+  EXPECT_TRUE(hertz.normal_law_changed);
+  EXPECT_EQ(hertz.footprint, "gyration");
+  const Diagnosis linear = diagnose_synthetic({}, 109, false, "gyration", {}, NormalLaw::linear, true);
+  EXPECT_EQ(linear.normal_law, "linear");
+  EXPECT_FALSE(linear.normal_law_changed);
+  EXPECT_EQ(linear.cause, "none");
 }
 
 // One effect hidden, so no second one to find. Fitted from the cause's point, the pair with
