@@ -128,13 +128,14 @@ void take_from_file(const std::filesystem::path& file, const diagnosis::ModelVar
   }
 }
 
-// The footprint rule a diagnosis.json kept ("" for any other file, or none).
-std::string footprint_kept_in(const std::string& file) {
+// The footprint rule, or normal law (key "normal_law"), a diagnosis.json kept ("" for any
+// other file, or none).
+std::string form_kept_in(const std::string& file, const char* key = "footprint") {
   if (file.empty() || !std::filesystem::is_regular_file(file)) return "";
   std::ifstream in(file);
   const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.is_object() || !j.contains("footprint") || !j["footprint"].is_string()) return "";
-  return j["footprint"].get<std::string>();
+  if (j.is_discarded() || !j.is_object() || !j.contains(key) || !j[key].is_string()) return "";
+  return j[key].get<std::string>();
 }
 
 void take_assignment(const std::string& assignment, const diagnosis::ModelVariant& variant, std::vector<double>& point,
@@ -218,7 +219,7 @@ void add_evaluate_measured(CLI::App& app) {
     diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
     print_data_issues(set);
     // A diagnosis's fits belong to the footprint rule it kept, which need not be the stated one.
-    const std::string footprint = !options->footprint.empty() ? options->footprint : footprint_kept_in(options->from);
+    const std::string footprint = !options->footprint.empty() ? options->footprint : form_kept_in(options->from);
     if (!footprint.empty()) {
       for (diagnosis::Footprint f : diagnosis::all_footprints()) {
         if (diagnosis::footprint_name(f) != footprint) continue;
@@ -227,6 +228,13 @@ void add_evaluate_measured(CLI::App& app) {
         }
         set.specimen = diagnosis::with_footprint(set.specimen, f);
       }
+    }
+    // And to the normal law it kept (diagnose --normal-laws).
+    const std::string law = form_kept_in(options->from, "normal_law");
+    try {
+      if (!law.empty()) set.specimen.model.normal_law = normal_law_of(law);
+    } catch (const std::invalid_argument& e) {
+      throw InputError(located(options->from, 0, std::string("key normal_law: ") + e.what()));
     }
     const std::vector<diagnosis::Mechanism> mechanisms = diagnosis::parse_mechanism_list(options->model, "--model");
     const diagnosis::ModelVariant variant(set.specimen, mechanisms, set.vertical_measured);

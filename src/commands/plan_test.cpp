@@ -129,7 +129,7 @@ void add_plan_test(CLI::App& app) {
     const std::filesystem::path from = options->from.empty()
                                            ? std::filesystem::path(options->directory) / "diagnosis" / "diagnosis.json"
                                            : std::filesystem::path(options->from);
-    // The candidates were fitted on the footprint the diagnosis kept.
+    // The candidates were fitted on the footprint and normal law the diagnosis kept.
     Case specimen = set.specimen;
     {
       std::ifstream in(from);
@@ -139,6 +139,13 @@ void add_plan_test(CLI::App& app) {
         for (diagnosis::Footprint f : diagnosis::all_footprints()) {
           if (diagnosis::footprint_name(f) == j["footprint"].get<std::string>())
             specimen = diagnosis::with_footprint(specimen, f);
+        }
+      }
+      if (!j.is_discarded() && j.contains("normal_law") && j["normal_law"].is_string()) {
+        try {
+          specimen.model.normal_law = normal_law_of(j["normal_law"].get<std::string>());
+        } catch (const std::invalid_argument& e) {
+          throw InputError(located(from, 0, std::string("key normal_law: ") + e.what()));
         }
       }
     }
