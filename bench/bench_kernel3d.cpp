@@ -88,13 +88,8 @@ lane::OperationCount count_operations3d(const Cask3D& cask) {
   return {total.flops / kSteps, total.other / kSteps};
 }
 
-void kernel3d(benchmark::State& state, InstructionSet isa) {
-  if (!instruction_set_available(isa)) {
-    state.SkipWithError((instruction_set_name(isa) + " is not available on this machine").c_str());
-    return;
-  }
-  const Cask3D cask = paper_cask3d();
-  const lane::OperationCount operations = count_operations3d(cask);
+// The timed work of a 3D kernel benchmark: a fresh block of kLanes lanes through kSteps steps.
+void advance_blocks3d(benchmark::State& state, InstructionSet isa, const Cask3D& cask) {
   const std::vector<double> table = table_acceleration(cask.model.model.time_step, kSteps);
   for (auto _ : state) {
     state.PauseTiming();
@@ -103,6 +98,16 @@ void kernel3d(benchmark::State& state, InstructionSet isa) {
     advance_block3d(isa, cask.model.model, cask.model.contacts, block, table.data(), nullptr, nullptr, 0, kSteps);
     benchmark::DoNotOptimize(block.view().body);
   }
+}
+
+void kernel3d(benchmark::State& state, InstructionSet isa) {
+  if (!instruction_set_available(isa)) {
+    state.SkipWithError((instruction_set_name(isa) + " is not available on this machine").c_str());
+    return;
+  }
+  const Cask3D cask = paper_cask3d();
+  const lane::OperationCount operations = count_operations3d(cask);
+  advance_blocks3d(state, isa, cask);
   const double lane_steps = double(kLanes) * kSteps * state.iterations();
   state.counters["lane_steps_per_s"] = benchmark::Counter(lane_steps, benchmark::Counter::kIsRate);
   state.counters["flops_per_lane_step"] = double(operations.flops);
@@ -119,14 +124,7 @@ void normal_law3d(benchmark::State& state, InstructionSet isa, NormalLaw law) {
     return;
   }
   const Cask3D cask = paper_cask3d(law);
-  const std::vector<double> table = table_acceleration(cask.model.model.time_step, kSteps);
-  for (auto _ : state) {
-    state.PauseTiming();
-    LaneBlock3D block = make_block3d(cask, kLanes);
-    state.ResumeTiming();
-    advance_block3d(isa, cask.model.model, cask.model.contacts, block, table.data(), nullptr, nullptr, 0, kSteps);
-    benchmark::DoNotOptimize(block.view().body);
-  }
+  advance_blocks3d(state, isa, cask);
   state.counters["lane_steps_per_s"] = benchmark::Counter(double(kLanes) * kSteps * state.iterations(), benchmark::Counter::kIsRate);
 }
 

@@ -128,14 +128,17 @@ void take_from_file(const std::filesystem::path& file, const diagnosis::ModelVar
   }
 }
 
-// The footprint rule, or normal law (key "normal_law"), a diagnosis.json kept ("" for any
-// other file, or none).
-std::string form_kept_in(const std::string& file, const char* key = "footprint") {
-  if (file.empty() || !std::filesystem::is_regular_file(file)) return "";
+// The footprint rule and the normal law a diagnosis.json kept ("" for any other file, or none).
+struct FormKept {
+  std::string footprint, normal_law;
+};
+FormKept form_kept_in(const std::string& file) {
+  if (file.empty() || !std::filesystem::is_regular_file(file)) return {};
   std::ifstream in(file);
   const nlohmann::json j = nlohmann::json::parse(in, nullptr, false);
-  if (j.is_discarded() || !j.is_object() || !j.contains(key) || !j[key].is_string()) return "";
-  return j[key].get<std::string>();
+  if (j.is_discarded() || !j.is_object()) return {};
+  auto text = [&j](const char* key) { return j.contains(key) && j[key].is_string() ? j[key].get<std::string>() : ""; };
+  return {text("footprint"), text("normal_law")};
 }
 
 void take_assignment(const std::string& assignment, const diagnosis::ModelVariant& variant, std::vector<double>& point,
@@ -219,7 +222,8 @@ void add_evaluate_measured(CLI::App& app) {
     diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
     print_data_issues(set);
     // A diagnosis's fits belong to the footprint rule it kept, which need not be the stated one.
-    const std::string footprint = !options->footprint.empty() ? options->footprint : form_kept_in(options->from);
+    const FormKept kept = form_kept_in(options->from);
+    const std::string footprint = !options->footprint.empty() ? options->footprint : kept.footprint;
     if (!footprint.empty()) {
       for (diagnosis::Footprint f : diagnosis::all_footprints()) {
         if (diagnosis::footprint_name(f) != footprint) continue;
@@ -230,9 +234,8 @@ void add_evaluate_measured(CLI::App& app) {
       }
     }
     // And to the normal law it kept (diagnose --normal-laws).
-    const std::string law = form_kept_in(options->from, "normal_law");
     try {
-      if (!law.empty()) set.specimen.model.normal_law = normal_law_of(law);
+      if (!kept.normal_law.empty()) set.specimen.model.normal_law = normal_law_of(kept.normal_law);
     } catch (const std::invalid_argument& e) {
       throw InputError(located(options->from, 0, std::string("key normal_law: ") + e.what()));
     }

@@ -378,22 +378,17 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   }
   if (!any_issue) md << "No imperfections found in the test files.\n";
   if (!d.footprints.empty()) {
+    // With the normal laws compared a row is a form (a rule and a law), else a rule.
     const bool laws = laws_compared(d.footprints);
-    if (laws) {
-      md << "\n## Model form\n\nThe baseline calibrated on each footprint rule and each normal law (linear "
-            "spring-dashpot, Hunt-Crossley), the held-out tests judged at common tolerances; another form replaces the "
-            "stated one when its held-out gain is at least 0.2. The chosen form's row is the calibrated baseline "
-            "below (refitted from the mechanisms' fits where that fitted the training tests better, and the rows "
-            "judged again).\n\n"
-         << "| form | held-out error | gain against the stated form | friction | damping ratio | stiffness scale | ";
-    } else {
-      md << "\n## Footprint\n\nThe baseline calibrated on each footprint rule, the held-out tests judged at common "
-            "tolerances; another rule replaces the stated one when its held-out gain is at least 0.2. The chosen rule's "
-            "row is the calibrated baseline below (refitted from the mechanisms' fits where that fitted the training "
-            "tests better, and the rows judged again).\n\n"
-         << "| footprint | held-out error | gain against the stated rule | friction | damping ratio | stiffness scale | ";
-    }
-    md << "adequate | |\n|---|---|---|---|---|---|---|---|\n";
+    const std::string row = laws ? "form" : "rule";
+    md << "\n## " << (laws ? "Model form" : "Footprint") << "\n\nThe baseline calibrated on each footprint rule"
+       << (laws ? " and each normal law (linear spring-dashpot, Hunt-Crossley)" : "")
+       << ", the held-out tests judged at common tolerances; another " << row
+       << " replaces the stated one when its held-out gain is at least 0.2. The chosen " << row
+       << "'s row is the calibrated baseline below (refitted from the mechanisms' fits where that fitted the training "
+          "tests better, and the rows judged again).\n\n"
+       << "| " << (laws ? "form" : "footprint") << " | held-out error | gain against the stated " << row
+       << " | friction | damping ratio | stiffness scale | adequate | |\n|---|---|---|---|---|---|---|---|\n";
     for (const FootprintScore& f : d.footprints) {
       md << "| " << form_label(f, laws) << (f.stated ? " (stated)" : "") << " | " << number(f.heldout_error, 3) << " | "
          << number(f.heldout_gain, 3) << " | " << number(f.baseline.fit.best[0], 3) << " | "
