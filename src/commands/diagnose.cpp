@@ -173,13 +173,16 @@ void add_diagnose(CLI::App& app) {
       diagnosis::write_diagnosis(out, set, d, InstructionSet::automatic, !options->no_plot, plan ? &*plan : nullptr);
       std::cout << "wall time       " << std::setprecision(4) << d.wall_seconds << " s\n";
       std::cout << "wrote           " << out.string() << "/ (diagnosis.json, report.md"
-                << (options->no_plot ? "" : ", PNGs") << ")\n";
+                << (options->no_plot ? "" : ", PNGs")
+                << (plan && !plan->tests.empty() ? ", plan.json, drive-1.csv ...: the proposed tests' table drives" : "")
+                << ")\n";
     });
   }
   {
     struct Options {
-      std::string out, effects;
+      std::string out, effects, drive;
       std::uint64_t seed = 1;
+      int test = 0;
       diagnosis::SyntheticSpec noise;  // its noise levels only
     };
     auto options = std::make_shared<Options>();
@@ -200,10 +203,26 @@ void add_diagnose(CLI::App& app) {
                     "Standard deviation of the table channels' noise (horizontal and vertical), m/s^2")
         ->check(number_within("a table noise in m/s^2", 0.0, 10.0))
         ->capture_default_str();
+    // The loop closed: a proposed test (a plan's drive file) run on the same hidden specimen.
+    auto* drive = cmd->add_option("--drive", options->drive,
+                                  "Add one test to the set in --out (made with the same --effect and --seed): the "
+                                  "table driven by this file, a plan's drive-1.csv");
+    auto* test = cmd->add_option("--test", options->test, "The added test's number (with --drive)")
+                     ->check(number_check(
+                         "a test number, a whole number from 1 to 999",
+                         [](double x) { return x >= 1.0 && x <= 999.0 && x == std::floor(x); }, "TEST"));
+    drive->needs(test);
+    test->needs(drive);
     cmd->callback([options]() {
       diagnosis::SyntheticSpec spec = options->noise;
       spec.seed = options->seed;
       spec.hidden = diagnosis::parse_mechanism_list(options->effects, "--effect");
+      if (!options->drive.empty()) {
+        diagnosis::add_synthetic_drive_test(options->out, spec, options->drive, options->test);
+        std::cout << "wrote           " << options->out << "/test" << options->test << ".csv (the table driven by "
+                  << options->drive << ")\n";
+        return;
+      }
       prepare_output_directory(options->out);
       const diagnosis::SyntheticTruth truth = diagnosis::write_synthetic_measured_set(options->out, spec);
       std::cout << "wrote           " << options->out << "/ (specimen.toml, test1.csv ... test8.csv, truth.json)\n";

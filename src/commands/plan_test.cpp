@@ -162,7 +162,8 @@ void add_plan_test(CLI::App& app) {
     diagnosis::write_plan(out, plan, !options->no_plot);
     std::cout << "wall time       " << std::setprecision(4) << plan.wall_seconds << " s\n";
     std::cout << "wrote           " << out.string() << "/ (plan.json, plan.md, plan-histories.h5"
-              << (options->no_plot ? "" : ", plan.png") << ")\n";
+              << (options->no_plot ? "" : ", plan.png")
+              << (plan.tests.empty() ? "" : ", drive-1.csv ...: the proposed tests' table drives") << ")\n";
   });
 }
 

@@ -2,12 +2,14 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <iomanip>
 #include <nlohmann/json.hpp>
 #include <sstream>
 
 #include "caskdem/build_info.h"
+#include "core/error.h"
 #include "io/hdf5_file.h"
 #include "io/run_output.h"
 
@@ -39,6 +41,23 @@ Predicted predicted_of(const SimulatedHistory& h) {
 
 std::size_t shown(const TestPlan& plan) { return std::min<std::size_t>(kProposedTests, plan.tests.size()); }
 
+std::string drive_file_name(std::size_t rank) { return "drive-" + std::to_string(rank + 1) + ".csv"; }
+
+// The table drive of a proposed test, noise-free, in the measured tests' CSV layout (what the
+// table operator runs; the laboratory's recording of it is the new test's table channel).
+void write_drive(const std::filesystem::path& file, std::size_t rank, const ProposedTest& p) {
+  std::ofstream out(file);
+  out << "# proposed test " << rank + 1 << ": " << p.description << "\n"
+      << "# the table drive, noise-free; model scale, SI units (s, m/s^2), every " << p.input.time_step << " s; "
+      << "the table does not move vertically\n"
+      << "t,table_acc\n";
+  char line[64];
+  for (std::size_t k = 0; k < p.drive.size(); ++k) {
+    std::snprintf(line, sizeof line, "%.6f,%.9g\n", double(k) * p.input.time_step, p.drive[k]);
+    out << line;
+  }
+}
+
 }  // namespace
 
 std::string plan_markdown(const TestPlan& plan) {
@@ -65,6 +84,8 @@ std::string plan_markdown(const TestPlan& plan) {
      << "diagnosis judges a measured test (sensor noise at this set's levels, the test's predictability, each fit's "
      << "standard errors): an expected log-likelihood ratio. Above 10.8 one such test decides between the closest "
      << "pair at the 0.001 level; below 1 it cannot tell them apart.\n\n"
+     << "The table drive of each (noise-free, model scale, SI) is in drive-1.csv to drive-" << shown(plan)
+     << ".csv.\n\n"
      << "| rank | test | separation | closest pair |";
   for (const PlanCandidate& c : plan.candidates) md << " " << c.name << ": peak rotation (rad), max sliding (mm) |";
   md << "\n|---|---|---|---|";
@@ -124,6 +145,8 @@ void write_plan(const std::filesystem::path& directory, const TestPlan& plan, bo
                         {"pair_loss", p.pair_loss}};
     if (p.kind == "sine") t["frequency_hz"] = p.frequency;
     if (p.kind == "record") t["scale"] = p.scale;
+    const std::size_t rank = j["tests"].size();
+    if (rank < shown(plan)) t["drive_file"] = drive_file_name(rank);
     t["predicted"] = nlohmann::json::array();
     for (const SimulatedHistory& h : p.predicted) {
       const Predicted q = predicted_of(h);
@@ -134,6 +157,7 @@ void write_plan(const std::filesystem::path& directory, const TestPlan& plan, bo
   j["wall_time_s"] = plan.wall_seconds;
   std::ofstream(directory / "plan.json") << j.dump(2) << "\n";
   std::ofstream(directory / "plan.md") << "# Proposed tests\n\n" << plan_markdown(plan);
+  for (std::size_t t = 0; t < shown(plan); ++t) write_drive(directory / drive_file_name(t), t, plan.tests[t]);
 
   {  // closed before the plot reads it
     hdf5::Group root = hdf5::create_file(directory / "plan-histories.h5");
@@ -156,6 +180,44 @@ void write_plan(const std::filesystem::path& directory, const TestPlan& plan, bo
   if (plots && shown(plan) > 0 && plan.candidates.size() > 1) {
     run_plot_script("plot_plan.py", {(directory / "plan-histories.h5").string(), (directory / "plan.png").string()});
   }
+}
+
+TableDrive read_drive(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) fail_at(file, 0, "cannot be read; expected a table drive (drive-1.csv of a plan)");
+  TableDrive drive;
+  std::string line;
+  long number = 0;
+  bool header = false;
+  double previous = 0.0;
+  while (std::getline(in, line)) {
+    ++number;
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    if (line.front() == '#') {
+      if (drive.description.empty()) drive.description = line.substr(std::min<std::size_t>(2, line.size()));
+      continue;
+    }
+    if (!header) {
+      if (line.rfind("t,table_acc", 0) != 0) fail_at(file, number, "expected the header 't,table_acc'");
+      header = true;
+      continue;
+    }
+    double t = 0.0, a = 0.0;
+    char rest = 0;
+    if (std::sscanf(line.c_str(), "%lf,%lf%c", &t, &a, &rest) != 2 || !std::isfinite(t) || !std::isfinite(a))
+      fail_at(file, number, "expected a time in s and a table acceleration in m/s^2, not '" + line + "'");
+    const std::size_t k = drive.acceleration.size();
+    if (k == 0 && t != 0.0) fail_at(file, number, "expected the drive to start at t = 0");
+    if (k == 1) drive.time_step = t;
+    if (k >= 1 && (!(drive.time_step > 0.0) || std::abs(t - previous - drive.time_step) > 1e-6 * drive.time_step))
+      fail_at(file, number, "expected samples evenly spaced in time");
+    previous = t;
+    drive.acceleration.push_back(a);
+  }
+  if (drive.acceleration.size() < 2) fail_at(file, 0, "expected at least two samples after the header");
+  if (drive.description.empty()) drive.description = "table drive " + file.filename().string();
+  return drive;
 }
 
 }  // namespace caskdem::diagnosis

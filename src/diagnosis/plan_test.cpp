@@ -168,6 +168,7 @@ std::vector<ProposedTest> feasible_tests(const MeasuredSet& set, const TableLimi
       ProposedTest p;
       p.kind = "sine";
       p.frequency = f;
+      p.drive = a;
       p.peak_acceleration = motion::peak_acceleration(*motion, dt);
       p.peak_velocity = motion::peak_velocity(*motion, dt);
       for (int k = 0; k < steps; ++k) {
@@ -203,6 +204,7 @@ std::vector<ProposedTest> feasible_tests(const MeasuredSet& set, const TableLimi
       ProposedTest p;
       p.kind = "record";
       p.scale = scale;
+      p.drive = a;
       p.peak_acceleration = scale * peak;
       std::ostringstream d;
       d.precision(3);

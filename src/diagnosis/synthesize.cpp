@@ -7,9 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/error.h"
 #include "core/units.h"
 #include "diagnosis/measured_set.h"
 #include "diagnosis/measures.h"
+#include "diagnosis/plan_report.h"
 #include "diagnosis/test_simulation.h"
 #include "ensemble/sampling.h"
 #include "motion/synthetic.h"
@@ -120,41 +122,78 @@ safety_factor = 0.05   # 5 times the paper's step, for speed; a test near a rock
 )";
 }
 
-SyntheticTruth write_synthetic_measured_set(const std::filesystem::path& directory, const SyntheticSpec& spec) {
-  std::filesystem::create_directories(directory);
-  std::ofstream(directory / "specimen.toml") << synthetic_specimen_text() << kSearch;
-  Case specimen = read_specimen(directory / "specimen.toml", nullptr);
-  specimen.model.normal_law = spec.normal_law;
-  auto hidden = [&](Mechanism m) { return std::find(spec.hidden.begin(), spec.hidden.end(), m) != spec.hidden.end(); };
-  const ModelVariant truth(specimen, spec.hidden, true);
+namespace {
 
-  // The true values: the specimen's baseline parameters off their nominal values, and each
-  // hidden mechanism at a value drawn from a range where its effect is visible.
+// The true values: the specimen's baseline parameters off their nominal values, and each
+// hidden mechanism at a value drawn from a range where its effect is visible.
+std::vector<double> true_values(const ModelVariant& truth, std::uint64_t seed) {
   std::vector<double> x = truth.reference();
-  const double sign = philox_uniform(spec.seed, 0x5717, 1, 0) < 0.5 ? -1.0 : 1.0;
+  const double sign = philox_uniform(seed, 0x5717, 1, 0) < 0.5 ? -1.0 : 1.0;
   for (std::size_t i = 0; i < truth.parameters().size(); ++i) {
     const Parameter& p = truth.parameters()[i];
     double& v = x[i];
-    if (p.name == "friction") v = draw(spec.seed, 1, 0.30, 0.40);
-    else if (p.name == "damping_ratio") v = draw(spec.seed, 2, 0.01, 0.05);
-    else if (p.name == "stiffness_scale") v = draw(spec.seed, 3, 0.7, 1.4);
-    else if (p.name == "kinetic_ratio") v = draw(spec.seed, 4, 0.55, 0.75);
-    else if (p.name == "decay_speed") v = draw(spec.seed, 5, 0.02, 0.10);
-    else if (p.name == "impact_damping") v = draw(spec.seed, 6, 8.0, 20.0);
-    else if (p.name == "eccentricity") v = sign * draw(spec.seed, 7, 0.4, 0.6) * p.high;
-    else if (p.name == "base_camber") v = draw(spec.seed, 8, 0.4, 0.8) * p.high;
+    if (p.name == "friction") v = draw(seed, 1, 0.30, 0.40);
+    else if (p.name == "damping_ratio") v = draw(seed, 2, 0.01, 0.05);
+    else if (p.name == "stiffness_scale") v = draw(seed, 3, 0.7, 1.4);
+    else if (p.name == "kinetic_ratio") v = draw(seed, 4, 0.55, 0.75);
+    else if (p.name == "decay_speed") v = draw(seed, 5, 0.02, 0.10);
+    else if (p.name == "impact_damping") v = draw(seed, 6, 8.0, 20.0);
+    else if (p.name == "eccentricity") v = sign * draw(seed, 7, 0.4, 0.6) * p.high;
+    else if (p.name == "base_camber") v = draw(seed, 8, 0.4, 0.8) * p.high;
     else if (p.name == "vertical_gain") v = 1.0;
-    else if (p.name == "floor_soft_ratio") v = draw(spec.seed, 9, 0.03, 0.10);
-    else if (p.name == "floor_soft_depth") v = draw(spec.seed, 10, 20.0, 50.0) * p.reference;
-    else if (p.name == "wobble_damping") v = draw(spec.seed, 11, 0.15, 0.30);
-    else if (p.name == "sensor_delay") v = sign * draw(spec.seed, 12, 0.03, 0.06);
+    else if (p.name == "floor_soft_ratio") v = draw(seed, 9, 0.03, 0.10);
+    else if (p.name == "floor_soft_depth") v = draw(seed, 10, 20.0, 50.0) * p.reference;
+    else if (p.name == "wobble_damping") v = draw(seed, 11, 0.15, 0.30);
+    else if (p.name == "sensor_delay") v = sign * draw(seed, 12, 0.03, 0.06);
   }
-  const ModelVariant& simulated = truth;
-  const std::vector<double>& x_simulated = x;
+  return x;
+}
+
+// The true model's response to the table motion `clean` (noise-free), written as test NUMBER
+// with the noise of (seed, number - 1, sample, channel).
+void write_test(const std::filesystem::path& directory, int number, const std::string& description,
+                const MeasuredTest& clean, const ModelVariant& truth, const std::vector<double>& x,
+                const SyntheticSpec& spec) {
+  const SimulatedHistory response =
+      delayed(simulate_test(truth, clean, {x}, InstructionSet::automatic)[0], clean.time, truth.sensor_delay(x));
+  const std::string name = "test" + std::to_string(number);
+  const std::uint64_t i = static_cast<std::uint64_t>(number - 1);
+  std::ofstream csv(directory / (name + ".csv"));
+  csv << "# synthetic shaking-table test " << name << description << ": SI units, "
+      << std::lround(1.0 / clean.time_step) << " Hz\n";
+  csv << "t,table_acc,theta,slide,table_acc_v\n";
+  char line[256];
+  for (std::size_t k = 0; k < clean.time.size(); ++k) {
+    std::snprintf(line, sizeof line, "%.3f,%.9g,%.9g,%.9g,%.9g\n", clean.time[k],
+                  clean.table_acceleration[k] + spec.table_noise * normal(spec.seed, i, k, 0),
+                  response.rotation[k] + spec.rotation_noise * normal(spec.seed, i, k, 1),
+                  response.slide[k] + spec.slide_noise * normal(spec.seed, i, k, 2),
+                  clean.vertical_table_acceleration[k] + spec.table_noise * normal(spec.seed, i, k, 3));
+    csv << line;
+  }
+}
+
+// The specimen as the data were made: the stated one on the spec's normal law.
+Case true_specimen(const std::filesystem::path& directory, const SyntheticSpec& spec) {
+  Case specimen = read_specimen(directory / "specimen.toml", nullptr);
+  specimen.model.normal_law = spec.normal_law;
+  return specimen;
+}
+
+}  // namespace
+
+SyntheticTruth write_synthetic_measured_set(const std::filesystem::path& directory, const SyntheticSpec& spec) {
+  std::filesystem::create_directories(directory);
+  std::ofstream(directory / "specimen.toml") << synthetic_specimen_text() << kSearch;
+  const Case specimen = true_specimen(directory, spec);
+  auto hidden = [&](Mechanism m) { return std::find(spec.hidden.begin(), spec.hidden.end(), m) != spec.hidden.end(); };
+  const ModelVariant truth(specimen, spec.hidden, true);
+  const std::vector<double> x = true_values(truth, spec.seed);
   std::vector<TestDesign> tests = designs(spec.seed, hidden(Mechanism::vertical_excitation));
   for (std::size_t i = 0; i < tests.size(); ++i) {
     MeasuredTest clean;
     clean.time_step = kSampleStep;
+    clean.has_vertical = true;
     const auto samples = static_cast<std::size_t>(std::floor((tests[i].horizontal->duration() + kFreeTime) / kSampleStep)) + 1;
     for (std::size_t k = 0; k < samples; ++k) {
       const double t = k * kSampleStep;
@@ -162,23 +201,7 @@ SyntheticTruth write_synthetic_measured_set(const std::filesystem::path& directo
       clean.table_acceleration.push_back(tests[i].horizontal->acceleration(t));
       clean.vertical_table_acceleration.push_back(tests[i].vertical->acceleration(t));
     }
-    clean.has_vertical = true;
-    const SimulatedHistory response = delayed(
-        simulate_test(simulated, clean, {x_simulated}, InstructionSet::automatic)[0], clean.time, simulated.sensor_delay(x_simulated));
-
-    const std::string name = "test" + std::to_string(i + 1);
-    std::ofstream csv(directory / (name + ".csv"));
-    csv << "# synthetic shaking-table test " << name << ": SI units, 200 Hz\n";
-    csv << "t,table_acc,theta,slide,table_acc_v\n";
-    char line[256];
-    for (std::size_t k = 0; k < samples; ++k) {
-      std::snprintf(line, sizeof line, "%.3f,%.9g,%.9g,%.9g,%.9g\n", clean.time[k],
-                    clean.table_acceleration[k] + spec.table_noise * normal(spec.seed, i, k, 0),
-                    response.rotation[k] + spec.rotation_noise * normal(spec.seed, i, k, 1),
-                    response.slide[k] + spec.slide_noise * normal(spec.seed, i, k, 2),
-                    clean.vertical_table_acceleration[k] + spec.table_noise * normal(spec.seed, i, k, 3));
-      csv << line;
-    }
+    write_test(directory, static_cast<int>(i) + 1, "", clean, truth, x, spec);
   }
 
   SyntheticTruth out;
@@ -192,6 +215,49 @@ SyntheticTruth write_synthetic_measured_set(const std::filesystem::path& directo
   j["noise"] = {{"rotation_rad", spec.rotation_noise}, {"slide_m", spec.slide_noise}, {"table_m_s2", spec.table_noise}};
   std::ofstream(directory / "truth.json") << j.dump(2) << "\n";
   return out;
+}
+
+void add_synthetic_drive_test(const std::filesystem::path& directory, const SyntheticSpec& spec,
+                              const std::filesystem::path& drive_file, int number) {
+  const auto truth_file = directory / "truth.json";
+  std::ifstream in(truth_file);
+  if (!in) throw InputError(truth_file.string() + ": cannot be read; expected a set written by synthesize-measured");
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::exception& e) {
+    throw InputError(truth_file.string() + ": not valid JSON (" + e.what() + ")");
+  }
+  std::vector<std::string> hidden;
+  for (Mechanism m : spec.hidden) hidden.push_back(mechanism_name(m));
+  const auto same = j.value("seed", std::uint64_t{0}) == spec.seed && j.value("hidden", std::vector<std::string>{}) == hidden &&
+                    j.value("normal_law", "linear") == normal_law_name(spec.normal_law);
+  if (!same) {
+    throw InputError(truth_file.string() + ": the set was made with seed " + std::to_string(j.value("seed", 0)) +
+                     " and hidden " + j.value("hidden", nlohmann::json::array()).dump() +
+                     "; expected the added test's --seed and --effect to be the same");
+  }
+  const std::string name = "test" + std::to_string(number);
+  if (number < 1 || std::filesystem::exists(directory / (name + ".csv"))) {
+    throw InputError(directory.string() + ": expected a new test number, and " + name + " exists");
+  }
+  SyntheticSpec same_noise = spec;  // the set's own noise levels
+  same_noise.rotation_noise = j.at("noise").at("rotation_rad").get<double>();
+  same_noise.slide_noise = j.at("noise").at("slide_m").get<double>();
+  same_noise.table_noise = j.at("noise").at("table_m_s2").get<double>();
+
+  const TableDrive drive = read_drive(drive_file);
+  MeasuredTest clean;
+  clean.time_step = drive.time_step;
+  clean.has_vertical = true;  // the table does not move vertically: the channel reads its noise
+  for (std::size_t k = 0; k < drive.acceleration.size(); ++k) {
+    clean.time.push_back(double(k) * drive.time_step);
+    clean.table_acceleration.push_back(drive.acceleration[k]);
+    clean.vertical_table_acceleration.push_back(0.0);
+  }
+  const Case specimen = true_specimen(directory, spec);
+  const ModelVariant truth(specimen, spec.hidden, true);
+  write_test(directory, number, " (" + drive.description + ")", clean, truth, true_values(truth, spec.seed), same_noise);
 }
 
 }  // namespace caskdem::diagnosis

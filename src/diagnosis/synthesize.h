@@ -48,4 +48,12 @@ std::string synthetic_specimen_text();
 // Writes specimen.toml, test1.csv ... test8.csv and truth.json into `directory` (created).
 SyntheticTruth write_synthetic_measured_set(const std::filesystem::path& directory, const SyntheticSpec& spec);
 
+// Adds test NUMBER to a set this generator wrote with the same spec (seed, hidden mechanisms,
+// normal law; the noise levels are the set's, from truth.json): the true model driven by a
+// table drive file (a plan's drive-1.csv), the table still vertically, with the noise of
+// stream (seed, NUMBER - 1), as the laboratory would run a proposed test. Throws InputError
+// naming the file on a bad drive, another spec or a test that exists.
+void add_synthetic_drive_test(const std::filesystem::path& directory, const SyntheticSpec& spec,
+                              const std::filesystem::path& drive_file, int number);
+
 }  // namespace caskdem::diagnosis

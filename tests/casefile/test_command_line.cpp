@@ -299,6 +299,10 @@ TEST_F(CommandLine, BadOptionValuesExitTwoNamingTheOption) {
            // CLI11 wrapped -3 to 2^64 - 3.
            {"synthesize-measured --out " + out + " --seed -3", "--seed: expected a seed, a whole number"},
            {"synthesize-measured --out " + out + " --table-noise 1e300", "--table-noise: expected a table noise"},
+           {"synthesize-measured --out " + out + " --drive d.csv --test 0", "--test: expected a test number"},
+           {"synthesize-measured --out " + out + " --drive d.csv", "--drive requires --test"},
+           // The loop closed on a set that is not there: its truth.json is named.
+           {"synthesize-measured --out " + out + " --drive d.csv --test 9", "truth.json: cannot be read"},
            // Ignored before: the record was printed unscaled.
            {"motion none.csv --scale -1", "--scale: expected a finite number above zero"},
            {"motion none.csv --target-pga nan", "--target-pga: expected a finite number above zero"},

@@ -2,10 +2,12 @@
 // candidates that predict alike are not separated by any test; two frictions a factor three
 // apart are separated beyond the adequacy bound by a test strong enough to slide the cask under
 // one of them and not the other (the onset of sliding is mu g, rigid-plastic theory); every
-// proposed sine respects the table's stated limits; and a [table] that cannot be used is one
+// proposed sine respects the table's stated limits, and its drive file is its table motion
+// without the noise; and a [table] that cannot be used is one
 // clear error naming the file and key.
 
 #include <cmath>
+#include <cstdio>
 #include <fstream>
 #include <string>
 
@@ -14,6 +16,8 @@
 #include "core/error.h"
 #include "core/units.h"
 #include "diagnosis/measured_set.h"
+#include "diagnosis/measured_test.h"
+#include "diagnosis/plan_report.h"
 #include "diagnosis/plan_test.h"
 #include "diagnosis/synthesize.h"
 #include "support/temporary_files.h"
@@ -67,6 +71,19 @@ TEST(PlanTest, SeparatesTwoFrictionsWithATestThatSlidesOnlyOne) {
     EXPECT_GE(p.frequency, limits.min_frequency * (1.0 - 1e-9));
     EXPECT_LE(p.frequency, limits.max_frequency * (1.0 + 1e-9));
   }
+  // Each drive is the test's table motion without the noise: its peak is the stated peak, and
+  // the simulated table channel departs from it by the set's table noise alone.
+  for (const ProposedTest& p : plan.tests) {
+    ASSERT_EQ(p.drive.size(), p.input.table_acceleration.size()) << p.description;
+    double peak = 0.0, departure = 0.0;
+    for (std::size_t k = 0; k < p.drive.size(); ++k) {
+      peak = std::max(peak, std::abs(p.drive[k]));
+      departure = std::max(departure, std::abs(p.input.table_acceleration[k] - p.drive[k]));
+    }
+    EXPECT_NEAR(peak, p.peak_acceleration, 1e-9 * p.peak_acceleration) << p.description;
+    EXPECT_GT(departure, 0.0) << p.description;
+    EXPECT_LT(departure, 0.05 * p.peak_acceleration) << p.description;
+  }
   // Ranked best first; the best decides between the two on its own.
   for (std::size_t t = 1; t < plan.tests.size(); ++t) EXPECT_GE(plan.tests[t - 1].separation, plan.tests[t].separation);
   const ProposedTest& best = plan.tests.front();
@@ -75,6 +92,28 @@ TEST(PlanTest, SeparatesTwoFrictionsWithATestThatSlidesOnlyOne) {
   EXPECT_GT(best.separation, 10.83) << best.description;
   // A rigid block slides when the table exceeds mu g: the best test lies beyond the lower onset.
   EXPECT_GT(best.peak_acceleration, 0.15 * units::standard_gravity) << best.description;
+  // The plan's files: the best three's drives, readable as a measured test's table channel.
+  testing::TestDirectory out;
+  write_plan(out.path(), plan, false);
+  for (int rank = 1; rank <= kProposedTests; ++rank) {
+    const auto file = out.path() / ("drive-" + std::to_string(rank) + ".csv");
+    ASSERT_TRUE(std::filesystem::exists(file)) << file;
+    std::ifstream in(file);
+    std::string line;
+    std::size_t samples = 0;
+    double worst = 0.0;
+    while (std::getline(in, line)) {
+      if (line.empty() || !std::isdigit(static_cast<unsigned char>(line[0]))) continue;
+      const double t = std::stod(line), a = std::stod(line.substr(line.find(',') + 1));
+      const ProposedTest& p = plan.tests[rank - 1];
+      EXPECT_NEAR(t, double(samples) * p.input.time_step, 1e-6);
+      worst = std::max(worst, std::abs(a - p.drive[samples]));
+      ++samples;
+    }
+    EXPECT_EQ(samples, plan.tests[rank - 1].drive.size());
+    EXPECT_LT(worst, 1e-8 * plan.tests[rank - 1].peak_acceleration);
+  }
+  EXPECT_FALSE(std::filesystem::exists(out.path() / "drive-4.csv"));
   // Below both onsets neither candidate slides or rocks: those tests separate them least.
   for (const ProposedTest& p : plan.tests) {
     if (p.peak_acceleration < 0.1 * units::standard_gravity) {
@@ -124,6 +163,80 @@ TEST(PlanTest, ATableThatCannotBeUsedIsOneClearError) {
       EXPECT_NE(message.find(c.expected), std::string::npos) << message;
     }
   }
+}
+
+// The loop closed on caskdem's own generator: a proposed test run on the hidden specimen is that
+// specimen's response to the drive. Driven by the table channel of one of its own tests (noise
+// off, so the channel is the test's motion), the added test reproduces that test's response.
+// The channel has 9 significant digits, the generator's motion 17: the test is test1, which
+// rocks without sliding, so the response follows the input that closely (within 1e-6 of its
+// peak). A test that slides does not: stick-slip turns those 1e-9 into 1e-3 of the peak on
+// test2 and 0.3 on the earthquake of test6, which is why a diagnosis judges each test by its
+// predictability.
+TEST(PlanTest, ADriveRunOnTheHiddenSpecimenGivesItsOwnTestBack) {
+  testing::TestDirectory directory, drives("drives");  // a drive in the data's directory would be read as a test
+  const auto dir = directory.path();
+  SyntheticSpec spec;
+  spec.seed = 11;
+  spec.hidden = {Mechanism::eccentric_mass};
+  spec.rotation_noise = spec.slide_noise = spec.table_noise = 0.0;
+  write_synthetic_measured_set(dir, spec);
+  const MeasuredTest own = read_measured_test(dir / "test1.csv");
+  {
+    std::ofstream drive(drives.path() / "drive.csv");
+    drive << "# test1's table motion\nt,table_acc\n";
+    char line[64];
+    for (std::size_t k = 0; k < own.time.size(); ++k) {
+      std::snprintf(line, sizeof line, "%.6f,%.17g\n", double(k) * own.time_step, own.table_acceleration[k]);
+      drive << line;
+    }
+  }
+  add_synthetic_drive_test(dir, spec, drives.path() / "drive.csv", 9);
+  const MeasuredTest added = read_measured_test(dir / "test9.csv");
+  ASSERT_EQ(added.time.size(), own.time.size());
+  double peak = 0.0, rotation = 0.0, slide = 0.0;
+  for (std::size_t k = 0; k < own.time.size(); ++k) {
+    peak = std::max(peak, std::abs(own.rotation[k]));
+    rotation = std::max(rotation, std::abs(added.rotation[k] - own.rotation[k]));
+    slide = std::max(slide, std::abs(added.slide[k] - own.slide[k]));
+  }
+  EXPECT_GT(peak, 1e-3);  // it rocks
+  EXPECT_LT(rotation, 1e-6 * peak);
+  EXPECT_LT(slide, 1e-8);
+  // The set now has nine tests; test9 trains.
+  EXPECT_EQ(read_measured_set(dir).tests.size(), 9u);
+}
+
+TEST(PlanTest, ABadDriveOrAnotherSpecimenIsOneClearError) {
+  testing::TestDirectory directory;
+  const auto dir = directory.path();
+  SyntheticSpec spec;
+  spec.seed = 12;
+  write_synthetic_measured_set(dir, spec);
+  const struct {
+    std::string text, expected;
+  } drives[] = {
+      {"time,acc\n0,0\n0.005,1\n", "drive.csv:1: expected the header 't,table_acc'"},
+      {"t,table_acc\n0,0\n0.005,1\n0.011,2\n", "drive.csv:4: expected samples evenly spaced"},
+      {"t,table_acc\n0.1,0\n0.105,1\n", "drive.csv:2: expected the drive to start at t = 0"},
+      {"t,table_acc\n0,0\n0.005,one\n", "drive.csv:3: expected a time in s and a table acceleration"},
+      {"t,table_acc\n0,0\n", "expected at least two samples"},
+  };
+  for (const auto& d : drives) {
+    std::ofstream(dir / "drive.csv") << d.text;
+    try {
+      add_synthetic_drive_test(dir, spec, dir / "drive.csv", 9);
+      ADD_FAILURE() << "accepted: " << d.text;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(d.expected), std::string::npos) << e.what();
+    }
+  }
+  std::ofstream(dir / "drive.csv") << "t,table_acc\n0,0\n0.005,1\n";
+  SyntheticSpec other = spec;
+  other.seed = 13;
+  EXPECT_THROW(add_synthetic_drive_test(dir, other, dir / "drive.csv", 9), InputError);
+  EXPECT_THROW(add_synthetic_drive_test(dir, spec, dir / "drive.csv", 3), InputError);  // test3 exists
+  EXPECT_FALSE(std::filesystem::exists(dir / "test9.csv"));
 }
 
 }  // namespace
