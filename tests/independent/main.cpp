@@ -1,6 +1,9 @@
 // caskdem_independent_data: writes a measured-data directory made with the independent
 // cylinder model, for testing `caskdem diagnose` on data its own model did not make.
 //   caskdem_independent_data --out DIR --effect NAME|none --seed N [--footprint distributed|gyration|radius]
+//   caskdem_independent_data --out DIR --effect NAME|none --seed N --drive FILE --test K
+// The second adds test K to the set in DIR (made with the same effect and seed): the table
+// driven by FILE, a drive caskdem plan-test wrote (drive-1.csv), as the laboratory would run it.
 #include <chrono>
 #include <cstdio>
 #include <iostream>
@@ -12,7 +15,9 @@ namespace {
 
 int usage(const std::string& problem) {
   std::cerr << "caskdem_independent_data: " << problem << "\n"
-            << "usage: caskdem_independent_data --out DIR --effect NAME|none --seed N [--footprint distributed|gyration|radius]\n"
+            << "usage: caskdem_independent_data --out DIR --effect NAME|none --seed N [--footprint "
+               "distributed|gyration|radius]\n"
+            << "       caskdem_independent_data --out DIR --effect NAME|none --seed N --drive FILE --test K\n"
             << "effects: none";
   for (const auto& name : independent::effect_names()) std::cerr << ", " << name;
   std::cerr << "\n";
@@ -22,11 +27,16 @@ int usage(const std::string& problem) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  std::string out, effect, seed_text, footprint = "distributed";
+  std::string out, effect, seed_text, footprint = "distributed", drive, test_text;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
-    std::string* target = arg == "--out" ? &out : arg == "--effect" ? &effect : arg == "--seed" ? &seed_text
-                        : arg == "--footprint" ? &footprint : nullptr;
+    std::string* target = arg == "--out"         ? &out
+                          : arg == "--effect"    ? &effect
+                          : arg == "--seed"      ? &seed_text
+                          : arg == "--footprint" ? &footprint
+                          : arg == "--drive"     ? &drive
+                          : arg == "--test"      ? &test_text
+                                                 : nullptr;
     if (!target) return usage("unknown argument '" + arg + "'");
     if (i + 1 >= argc) return usage(arg + " needs a value");
     *target = argv[++i];
@@ -46,6 +56,28 @@ int main(int argc, char** argv) {
   }
   if (footprint != "distributed" && footprint != "gyration" && footprint != "radius")
     return usage("--footprint must be distributed, gyration or radius, not '" + footprint + "'");
+
+  if (drive.empty() != test_text.empty()) return usage("--drive and --test go together");
+  if (!drive.empty()) {
+    int number = 0;
+    try {
+      std::size_t used = 0;
+      number = std::stoi(test_text, &used);
+      if (used != test_text.size() || number < 1) throw std::invalid_argument("not a test number");
+    } catch (const std::exception&) {
+      return usage("--test must be a positive integer, not '" + test_text + "'");
+    }
+    try {
+      const auto t = independent::add_drive_test(out, effect, seed, drive, number);
+      std::printf("%s: added %s from %s  peak rotation %.4f rad  peak slide %.2f mm  final slide %.2f mm%s\n",
+                  out.c_str(), t.name.c_str(), drive.c_str(), t.peak_rotation, 1e3 * t.peak_slide, 1e3 * t.final_slide,
+                  t.tipped_over ? "  TIPPED OVER" : "");
+    } catch (const std::exception& e) {  // a bad drive file or a set made otherwise: the input's fault
+      std::cerr << "caskdem_independent_data: " << e.what() << "\n";
+      return 2;
+    }
+    return 0;
+  }
 
   try {
     const auto start = std::chrono::steady_clock::now();

@@ -116,6 +116,103 @@ seed = 1
 )";
 }
 
+// One test of the truth's cask under `design`, recorded for `record_time` s at 200 Hz with the
+// sensor noise of stream 100 + number (so a test's noise is its seed's and number's alone),
+// written to DIRECTORY/NAME.csv; returns its summary and its truth.json entry.
+std::pair<TestSummary, nlohmann::json> write_test(const std::filesystem::path& directory, int number,
+                                                  const Design& design, double record_time, const Truth& truth,
+                                                  std::uint64_t seed, const MeasuredSetOptions& options) {
+  const CylinderModel model(truth.cask);
+  const State rest = model.equilibrium();
+  const double ratio = truth.vertical_ratio;
+  TableInput input;
+  input.horizontal = design.horizontal;
+  if (ratio > 0.0 && design.vertical_shape)
+    input.vertical = [&design, ratio](double t) { return ratio * design.vertical_shape(t); };
+
+  const auto samples = static_cast<std::size_t>(std::floor(record_time / kSampleStep)) + 1;
+  std::vector<double> times(samples);
+  for (std::size_t k = 0; k < samples; ++k) times[k] = k * kSampleStep - truth.sensor_delay;
+  const Response response = simulate(model, input, rest, times);
+
+  const std::string name = "test" + std::to_string(number);
+  RandomStream noise(seed, 100 + static_cast<std::uint64_t>(number));
+  std::ofstream csv(directory / (name + ".csv"));
+  csv << "# shaking-table test " << name << ": " << design.description << "; SI units, 200 Hz\n";
+  csv << "t,table_acc,theta,slide,table_acc_v\n";
+  TestSummary summary{name};
+  char line[256];
+  for (std::size_t k = 0; k < samples; ++k) {
+    const double t = k * kSampleStep;
+    const double av = input.vertical ? input.vertical(t) : 0.0;
+    // Noise drawn in a fixed order per sample, so every channel's noise is the seed's alone.
+    const double n0 = noise.normal(), n1 = noise.normal(), n2 = noise.normal(), n3 = noise.normal();
+    std::snprintf(line, sizeof line, "%.3f,%.9g,%.9g,%.9g,%.9g\n", t, design.horizontal(t) + options.table_noise * n0,
+                  response.rotation[k] + options.rotation_noise * n1, response.slide[k] + options.slide_noise * n2,
+                  av + options.table_noise * n3);
+    csv << line;
+    summary.peak_rotation = std::max(summary.peak_rotation, std::abs(response.rotation[k]));
+    summary.peak_slide = std::max(summary.peak_slide, std::abs(response.slide[k]));
+  }
+  summary.final_slide = response.slide.back();
+  summary.tipped_over = response.tipped_over;
+  summary.evaluations = response.steps;
+  nlohmann::json entry = {{"name", name},
+                          {"motion", design.description},
+                          {"peak_rotation_rad", summary.peak_rotation},
+                          {"peak_slide_m", summary.peak_slide},
+                          {"final_slide_m", summary.final_slide},
+                          {"tipped_over", summary.tipped_over}};
+  return {summary, entry};
+}
+
+// The drive file a plan writes (caskdem plan-test: "# ..." lines, then "t,table_acc", then
+// uniformly spaced samples in s and m/s^2).
+Design drive_design(const std::filesystem::path& file) {
+  std::ifstream in(file);
+  if (!in) throw std::runtime_error(file.string() + ": cannot be read");
+  Design d;
+  Accelerogram drive;
+  std::string line, description;
+  int number = 0;
+  bool header = false;
+  double first_time = 0.0, last_time = 0.0;
+  while (std::getline(in, line)) {
+    ++number;
+    const auto where = [&] { return file.string() + ": line " + std::to_string(number) + ": "; };
+    if (!line.empty() && line.back() == '\r') line.pop_back();
+    if (line.empty()) continue;
+    if (line.front() == '#') {
+      if (description.empty()) description = line.substr(std::min<std::size_t>(2, line.size()));
+      continue;
+    }
+    if (!header) {
+      if (line.rfind("t,table_acc", 0) != 0) throw std::runtime_error(where() + "expected the header 't,table_acc'");
+      header = true;
+      continue;
+    }
+    double t = 0.0, a = 0.0;
+    if (std::sscanf(line.c_str(), "%lf,%lf", &t, &a) != 2 || !std::isfinite(t) || !std::isfinite(a))
+      throw std::runtime_error(where() + "expected a time and a table acceleration, not '" + line + "'");
+    if (drive.acceleration.empty()) {
+      first_time = t;
+    } else {
+      const double step = drive.acceleration.size() == 1 ? t - first_time : drive.time_step;
+      if (!(step > 0.0) || std::abs(t - last_time - step) > 1e-6 * step)
+        throw std::runtime_error(where() + "expected samples evenly spaced in time");
+      drive.time_step = step;
+    }
+    if (first_time != 0.0) throw std::runtime_error(where() + "expected the drive to start at t = 0");
+    last_time = t;
+    drive.acceleration.push_back(a);
+  }
+  if (drive.acceleration.size() < 2) throw std::runtime_error(file.string() + ": expected at least two samples");
+  d.description = description.empty() ? "table drive " + file.filename().string() : description;
+  d.duration = drive.duration();
+  d.horizontal = drive;  // the table does not move vertically: no vertical_shape
+  return d;
+}
+
 }  // namespace
 
 MeasuredSetResult write_independent_measured_set(const std::filesystem::path& directory, const std::string& effect,
@@ -140,45 +237,10 @@ MeasuredSetResult write_independent_measured_set(const std::filesystem::path& di
     if (number < 1 || number > static_cast<int>(designs.size()))
       throw std::invalid_argument("no test " + std::to_string(number));
     const Design& design = designs[number - 1];
-    const double ratio = truth.vertical_ratio;
-    TableInput input;
-    input.horizontal = design.horizontal;
-    if (ratio > 0.0) input.vertical = [&design, ratio](double t) { return ratio * design.vertical_shape(t); };
-
-    const auto samples = static_cast<std::size_t>(std::floor((design.duration + options.free_time) / kSampleStep)) + 1;
-    std::vector<double> times(samples);
-    for (std::size_t k = 0; k < samples; ++k) times[k] = k * kSampleStep - truth.sensor_delay;
-    const Response response = simulate(model, input, rest, times);
-
-    const std::string name = "test" + std::to_string(number);
-    RandomStream noise(seed, 100 + static_cast<std::uint64_t>(number));
-    std::ofstream csv(directory / (name + ".csv"));
-    csv << "# shaking-table test " << name << ": " << design.description << "; SI units, 200 Hz\n";
-    csv << "t,table_acc,theta,slide,table_acc_v\n";
-    TestSummary summary{name};
-    char line[256];
-    for (std::size_t k = 0; k < samples; ++k) {
-      const double t = k * kSampleStep;
-      const double av = input.vertical ? input.vertical(t) : 0.0;
-      // Noise drawn in a fixed order per sample, so every channel's noise is the seed's alone.
-      const double n0 = noise.normal(), n1 = noise.normal(), n2 = noise.normal(), n3 = noise.normal();
-      std::snprintf(line, sizeof line, "%.3f,%.9g,%.9g,%.9g,%.9g\n", t, design.horizontal(t) + options.table_noise * n0,
-                    response.rotation[k] + options.rotation_noise * n1, response.slide[k] + options.slide_noise * n2,
-                    av + options.table_noise * n3);
-      csv << line;
-      summary.peak_rotation = std::max(summary.peak_rotation, std::abs(response.rotation[k]));
-      summary.peak_slide = std::max(summary.peak_slide, std::abs(response.slide[k]));
-    }
-    summary.final_slide = response.slide.back();
-    summary.tipped_over = response.tipped_over;
-    summary.evaluations = response.steps;
+    auto [summary, entry] =
+        write_test(directory, number, design, design.duration + options.free_time, truth, seed, options);
     result.tests.push_back(summary);
-    tests_json.push_back({{"name", name},
-                          {"motion", design.description},
-                          {"peak_rotation_rad", summary.peak_rotation},
-                          {"peak_slide_m", summary.peak_slide},
-                          {"final_slide_m", summary.final_slide},
-                          {"tipped_over", summary.tipped_over}});
+    tests_json.push_back(entry);
   }
 
   nlohmann::json j;
@@ -204,6 +266,33 @@ MeasuredSetResult write_independent_measured_set(const std::filesystem::path& di
   j["tests"] = tests_json;
   std::ofstream(directory / "truth.json") << j.dump(2) << "\n";
   return result;
+}
+
+TestSummary add_drive_test(const std::filesystem::path& directory, const std::string& effect, std::uint64_t seed,
+                           const std::filesystem::path& drive_file, int number, const MeasuredSetOptions& options) {
+  const auto truth_file = directory / "truth.json";
+  std::ifstream truth_in(truth_file);
+  if (!truth_in) throw std::runtime_error(truth_file.string() + ": cannot be read; write the set first");
+  nlohmann::json j = nlohmann::json::parse(truth_in);
+  if (j.value("effect", "") != effect || j.value("seed", std::uint64_t{0}) != seed)
+    throw std::invalid_argument(truth_file.string() + ": the set was made with effect " + j.value("effect", "?") +
+                                " and seed " + std::to_string(j.value("seed", std::uint64_t{0})) +
+                                "; the added test must use the same");
+  const std::string name = "test" + std::to_string(number);
+  if (number < 1 || std::filesystem::exists(directory / (name + ".csv")))
+    throw std::invalid_argument(directory.string() + ": " + name + " already exists or is not a test number");
+  const Truth truth = draw_truth(effect, seed);
+  const Design design = drive_design(drive_file);
+  MeasuredSetOptions same = options;  // the set's own noise levels
+  same.rotation_noise = j.at("noise").at("rotation_rad").get<double>();
+  same.slide_noise = j.at("noise").at("slide_m").get<double>();
+  same.table_noise = j.at("noise").at("table_m_s2").get<double>();
+  // The recording spans the drive, whose end is already a rest.
+  auto [summary, entry] = write_test(directory, number, design, design.duration, truth, seed, same);
+  entry["drive_file"] = drive_file.string();
+  j["tests"].push_back(entry);
+  std::ofstream(truth_file) << j.dump(2) << "\n";
+  return summary;
 }
 
 }  // namespace independent

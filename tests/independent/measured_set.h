@@ -3,6 +3,8 @@
 // nominal values an experimenter knows, test1.csv ... test6.csv with sensor noise, and
 // truth.json with what the diagnosis should find.
 //
+// A test a diagnosis proposed can be added afterwards from its drive file (add_drive_test).
+//
 // The test programme (1/3 model scale, 200 Hz, each followed by 2.5 s of free response):
 //   test1  sine 3.6 Hz, 10 mm (0.52 g)   test4  sine 5.0 Hz, 10 mm (1.01 g)
 //   test2  sine 4.2 Hz, 10 mm (0.71 g)   test5  Kobe 1995 KJMA 000, time / sqrt(3), 0.65 g
@@ -50,5 +52,14 @@ struct MeasuredSetResult {
 // footprint rule, std::runtime_error on a missing record.
 MeasuredSetResult write_independent_measured_set(const std::filesystem::path& directory, const std::string& effect,
                                                  std::uint64_t seed, const MeasuredSetOptions& options = {});
+
+// Adds test NUMBER to a set written with the same effect and seed: the cask of that truth driven
+// by a table drive file (caskdem plan-test's drive-K.csv: "t,table_acc", uniform samples, the
+// table still vertically), recorded for the drive's length with the set's noise levels (truth.json)
+// and stream 100 + NUMBER, and its entry appended to truth.json. Throws std::runtime_error naming
+// the file and line on a bad drive, std::invalid_argument on another effect or seed or a test
+// that exists.
+TestSummary add_drive_test(const std::filesystem::path& directory, const std::string& effect, std::uint64_t seed,
+                           const std::filesystem::path& drive_file, int number, const MeasuredSetOptions& options = {});
 
 }  // namespace independent

@@ -12,6 +12,7 @@
 #include <sstream>
 
 #include "cylinder_model.h"
+#include "excitation.h"
 #include "measured_set.h"
 #include "simulate.h"
 
@@ -234,6 +235,74 @@ TEST(MeasuredSet, EachEffectChangesTheData) {
   }
 }
 
+// A drive file as caskdem plan-test writes it: the 5 Hz sine of test4 sampled at 200 Hz.
+std::filesystem::path write_sine_drive(const std::filesystem::path& file, double record_time) {
+  const auto sine = ramped_sine(0.010, 5.0, 6.0);
+  std::ofstream out(file);
+  out << "# proposed test 1: sine 5 Hz, 10 mm\n# the table drive, noise-free\nt,table_acc\n";
+  char line[64];
+  for (int k = 0; k * 0.005 <= record_time + 1e-9; ++k) {
+    std::snprintf(line, sizeof line, "%.6f,%.9g\n", k * 0.005, sine(k * 0.005));
+    out << line;
+  }
+  return file;
+}
+
+// A test added from a drive file is the programme's test when the drive is that test's table
+// motion: the same cask (same effect and seed), the same recording. The drive is the sine's
+// samples joined by straight lines, which differ from the sine by at most (omega h)^2 / 8 =
+// 0.8 % of its peak at 5 Hz and 200 Hz; the response may differ by about as much.
+TEST(MeasuredSet, ATestAddedFromItsOwnDriveMatchesTheProgrammesTest) {
+  const auto dir = scratch("drive");
+  const MeasuredSetOptions options = one_test();
+  const auto set = write_independent_measured_set(dir, "eccentric_mass", 5, options);
+  const double record_time = ramped_sine_duration(5.0, 6.0) + options.free_time;
+  const auto drive = write_sine_drive(dir / "drive.csv", record_time);
+  const TestSummary added = add_drive_test(dir, "eccentric_mass", 5, drive, 7);
+  const TestSummary& own = set.tests[0];
+  std::printf("programme test4: peak rotation %.5f rad, peak slide %.3f mm; from the drive: %.5f rad, %.3f mm\n",
+              own.peak_rotation, 1e3 * own.peak_slide, added.peak_rotation, 1e3 * added.peak_slide);
+  EXPECT_EQ(added.name, "test7");
+  EXPECT_NEAR(added.peak_rotation, own.peak_rotation, 0.01 * own.peak_rotation);
+  EXPECT_NEAR(added.peak_slide, own.peak_slide, 0.02 * own.peak_slide + 1e-5);
+  // The same recording length, and the table channel is the drive plus the set's noise.
+  std::ifstream a(dir / "test4.csv"), b(dir / "test7.csv");
+  const auto rows = [](std::ifstream& in) {
+    std::string line;
+    int n = 0;
+    while (std::getline(in, line)) n += !line.empty() && std::isdigit(static_cast<unsigned char>(line[0]));
+    return n;
+  };
+  EXPECT_EQ(rows(a), rows(b));
+  const auto d = column_differences(dir / "test4.csv", dir / "test7.csv");
+  EXPECT_LT(d[1], 10 * 0.003 + 0.008 * 9.87);  // two noise draws (0.003 m/s^2 each) and the interpolation
+  // truth.json lists the added test.
+  EXPECT_NE(slurp(dir / "truth.json").find("\"test7\""), std::string::npos);
+}
+
+TEST(MeasuredSet, ABadDriveIsRefusedNamingTheFileAndLine) {
+  const auto dir = scratch("bad-drive");
+  write_independent_measured_set(dir, "none", 2, one_test());
+  std::ofstream(dir / "uneven.csv") << "t,table_acc\n0,0\n0.005,1\n0.011,2\n";
+  std::ofstream(dir / "header.csv") << "time,acc\n0,0\n";
+  const auto message = [&](auto&& call) {
+    try {
+      call();
+    } catch (const std::exception& e) {
+      return std::string(e.what());
+    }
+    return std::string("no error");
+  };
+  EXPECT_NE(message([&] { add_drive_test(dir, "none", 2, dir / "uneven.csv", 7); }).find("uneven.csv: line 4"),
+            std::string::npos);
+  EXPECT_NE(message([&] { add_drive_test(dir, "none", 2, dir / "header.csv", 7); }).find("header.csv: line 1"),
+            std::string::npos);
+  const auto drive = write_sine_drive(dir / "drive.csv", 1.0);
+  EXPECT_NE(message([&] { add_drive_test(dir, "none", 3, drive, 7); }).find("the same"), std::string::npos);
+  EXPECT_NE(message([&] { add_drive_test(dir, "none", 2, drive, 4); }).find("already exists"), std::string::npos);
+  EXPECT_FALSE(std::filesystem::exists(dir / "test7.csv"));
+}
+
 TEST(Cli, BadArgumentsExitWithTwo) {
   const std::string bin = INDEPENDENT_DATA_BINARY;
   const auto out = scratch("cli").string();
@@ -243,6 +312,9 @@ TEST(Cli, BadArgumentsExitWithTwo) {
   EXPECT_EQ(run("--out " + out + " --effect none --seed 1 --footprint wide"), 2);
   EXPECT_EQ(run("--effect none --seed 1"), 2);
   EXPECT_EQ(run("--out " + out + " --effect none --seed 1 --extra"), 2);
+  EXPECT_EQ(run("--out " + out + " --effect none --seed 1 --drive d.csv"), 2);  // no --test
+  EXPECT_EQ(run("--out " + out + " --effect none --seed 1 --drive d.csv --test 0"), 2);
+  EXPECT_EQ(run("--out " + out + " --effect none --seed 1 --drive d.csv --test 7"), 2);  // no set there
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
