@@ -1,0 +1,66 @@
+#!/bin/sh
+# The diagnosis in a closed loop on the independent generator (tests/independent): each data set
+# of six tests is diagnosed with its plan; the laboratory then runs the first proposed test (the
+# generator drives the same cask, same seed and noise model, with the plan's drive-1.csv as
+# test7) and the seven tests are diagnosed again. One CSV row per data set: the answer before and
+# after, the test proposed and its separation, and the wall time of each diagnosis (the first
+# with its plan) (bench/success_table.py --closed-loop makes the
+# rates, before and after, with their intervals).
+#
+#   bench/closed_loop.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS]
+#
+# Both diagnoses use curvature errors and skip the search for a second effect (it does not change
+# the cause); the second skips the plan. Where the first leaves only the baseline standing there
+# is no test to propose, and the answer after is the answer before. KEEP=DIR copies each set's
+# two diagnosis.json, plan.json and truth.json to DIR/EFFECT-SEED-*. About 4 to 8 minutes per set
+# on 2 cores. Appends to OUT_CSV, so a stopped run resumes.
+set -eu
+usage="usage: closed_loop.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS]"
+build=${1:?$usage}
+out=${2:?$usage}
+seeds=${3:-10}
+first=${4:-2001}
+effects=${5:-"none velocity_dependent_friction amplitude_dependent_restitution eccentric_mass base_imperfection vertical_excitation floor_compliance out_of_plane_loss sensor_delay"}
+caskdem="$build/src/caskdem"
+GENERATOR="$build/tests/independent/caskdem_independent_data"
+. "$(dirname "$0")/synthetic_sets.sh"
+[ -s "$out" ] || echo "hidden,seed,cause_before,cause_after,footprint_before,footprint_after,proposed,separation,closest_pair,candidates,wall_before_s,wall_after_s" >"$out"
+
+loop_set() {
+  dir=$1 effect=$2 seed=$3
+  start=$(date +%s)
+  "$caskdem" diagnose "$dir" --out "$dir/before" --quiet --no-plot --uncertainty curvature --no-second-effect >/dev/null
+  middle=$(date +%s)
+  if [ -f "$dir/before/drive-1.csv" ]; then
+    "$GENERATOR" --out "$dir" --effect "$effect" --seed "$seed" --drive "$dir/before/drive-1.csv" --test 7 >/dev/null
+    "$caskdem" diagnose "$dir" --out "$dir/after" --quiet --no-plot --uncertainty curvature --no-second-effect \
+      --no-plan >/dev/null
+  fi
+  end=$(date +%s)
+  /usr/bin/python3 - "$dir" "$effect" "$seed" $((middle - start)) $((end - middle)) >>"$out" <<'PY'
+import json, os, sys
+directory, effect, seed, wall_before, wall_after = sys.argv[1:6]
+before = json.load(open(os.path.join(directory, "before", "diagnosis.json")))
+after_file = os.path.join(directory, "after", "diagnosis.json")
+after = json.load(open(after_file)) if os.path.exists(after_file) else None
+plan_file = os.path.join(directory, "before", "plan.json")
+plan = json.load(open(plan_file)) if os.path.exists(plan_file) else {"tests": [], "candidates": []}
+best = plan["tests"][0] if plan["tests"] and after else None
+candidates = " ".join(c["name"] for c in plan["candidates"])
+fields = [effect, seed, before["cause"], (after or before)["cause"], before.get("footprint") or "",
+          (after or before).get("footprint") or "",
+          '"%s"' % best["description"].replace('"', "'") if best else "", "%.3g" % best["separation"] if best else "",
+          best["closest_pair"] if best else "", candidates, wall_before, wall_after if after else ""]
+print(",".join(fields))
+PY
+  if [ -n "${KEEP:-}" ]; then
+    mkdir -p "$KEEP"
+    cp "$dir/before/diagnosis.json" "$KEEP/$effect-$seed-before.json"
+    [ ! -f "$dir/before/plan.json" ] || cp "$dir/before/plan.json" "$KEEP/$effect-$seed-plan.json"
+    [ ! -f "$dir/after/diagnosis.json" ] || cp "$dir/after/diagnosis.json" "$KEEP/$effect-$seed-after.json"
+    cp "$dir/truth.json" "$KEEP/$effect-$seed-truth.json"
+  fi
+  tail -n 1 "$out"
+}
+
+for_each_new_set "$out" "$seeds" "$first" "$effects" loop_set
