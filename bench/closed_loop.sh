@@ -1,8 +1,9 @@
 #!/bin/sh
-# The diagnosis in a closed loop on the independent generator (tests/independent): each data set
-# of six tests is diagnosed with its plan; the laboratory then runs the first proposed test (the
-# generator drives the same cask, same seed and noise model, with the plan's drive-1.csv as
-# test7) and the seven tests are diagnosed again. One CSV row per data set: the answer before and
+# The diagnosis in a closed loop: each data set is diagnosed with its plan; the laboratory then
+# runs the first proposed test (the generator drives the same hidden cask, same seed and noise
+# model, with the plan's drive-1.csv) and the set, that test added, is diagnosed again. The data
+# come from the independent generator (tests/independent: six tests, the added one test7), or
+# with OWN=1 from caskdem synthesize-measured (eight tests, the added one test9). One CSV row per data set: the answer before and
 # after, the test proposed and its separation, and the wall time of each diagnosis (the first
 # with its plan) (bench/success_table.py --closed-loop makes the
 # rates, before and after, with their intervals).
@@ -13,7 +14,7 @@
 # the cause); the second skips the plan. Where the first leaves only the baseline standing there
 # is no test to propose, and the answer after is the answer before. KEEP=DIR copies each set's
 # two diagnosis.json, plan.json and truth.json to DIR/EFFECT-SEED-*. About 4 to 8 minutes per set
-# on 2 cores. Appends to OUT_CSV, so a stopped run resumes.
+# on 2 cores (the own generator's eight tests take longer). Appends to OUT_CSV, so a stopped run resumes.
 set -eu
 usage="usage: closed_loop.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS]"
 build=${1:?$usage}
@@ -22,8 +23,20 @@ seeds=${3:-10}
 first=${4:-2001}
 effects=${5:-"none velocity_dependent_friction amplitude_dependent_restitution eccentric_mass base_imperfection vertical_excitation floor_compliance out_of_plane_loss sensor_delay"}
 caskdem="$build/src/caskdem"
-GENERATOR="$build/tests/independent/caskdem_independent_data"
+if [ -z "${OWN:-}" ]; then GENERATOR="$build/tests/independent/caskdem_independent_data"; else unset GENERATOR; fi
 . "$(dirname "$0")/synthetic_sets.sh"
+
+# Test ADDED of the set in DIR (hidden EFFECT, SEED) driven by DRIVE, by the generator that made it.
+add_test() {
+  dir=$1 effect=$2 seed=$3 drive=$4
+  if [ -n "${GENERATOR:-}" ]; then
+    "$GENERATOR" --out "$dir" --effect "$effect" --seed "$seed" --drive "$drive" --test 7 >/dev/null
+  elif [ "$effect" = none ]; then
+    "$caskdem" synthesize-measured --out "$dir" --seed "$seed" --drive "$drive" --test 9 >/dev/null
+  else
+    "$caskdem" synthesize-measured --out "$dir" --seed "$seed" --effect "$effect" --drive "$drive" --test 9 >/dev/null
+  fi
+}
 [ -s "$out" ] || echo "hidden,seed,cause_before,cause_after,footprint_before,footprint_after,proposed,separation,closest_pair,candidates,wall_before_s,wall_after_s" >"$out"
 
 loop_set() {
@@ -32,7 +45,7 @@ loop_set() {
   "$caskdem" diagnose "$dir" --out "$dir/before" --quiet --no-plot --uncertainty curvature --no-second-effect >/dev/null
   middle=$(date +%s)
   if [ -f "$dir/before/drive-1.csv" ]; then
-    "$GENERATOR" --out "$dir" --effect "$effect" --seed "$seed" --drive "$dir/before/drive-1.csv" --test 7 >/dev/null
+    add_test "$dir" "$effect" "$seed" "$dir/before/drive-1.csv"
     "$caskdem" diagnose "$dir" --out "$dir/after" --quiet --no-plot --uncertainty curvature --no-second-effect \
       --no-plan >/dev/null
   fi
@@ -59,6 +72,7 @@ PY
     [ ! -f "$dir/before/plan.json" ] || cp "$dir/before/plan.json" "$KEEP/$effect-$seed-plan.json"
     [ ! -f "$dir/after/diagnosis.json" ] || cp "$dir/after/diagnosis.json" "$KEEP/$effect-$seed-after.json"
     cp "$dir/truth.json" "$KEEP/$effect-$seed-truth.json"
+    [ ! -f "$dir/before/drive-1.csv" ] || cp "$dir/before/drive-1.csv" "$KEEP/$effect-$seed-drive-1.csv"
   fi
   tail -n 1 "$out"
 }

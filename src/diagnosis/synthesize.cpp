@@ -184,6 +184,15 @@ Case true_specimen(const std::filesystem::path& directory, const SyntheticSpec& 
 
 SyntheticTruth write_synthetic_measured_set(const std::filesystem::path& directory, const SyntheticSpec& spec) {
   std::filesystem::create_directories(directory);
+  // Tests an earlier --drive added to a set here would be read as tests of this one.
+  if (std::ifstream earlier(directory / "truth.json"); earlier) {
+    const nlohmann::json old = nlohmann::json::parse(earlier, nullptr, false);
+    if (old.is_object() && old.contains("added_tests") && old["added_tests"].is_array()) {
+      for (const auto& name : old["added_tests"]) {
+        if (name.is_string()) std::filesystem::remove(directory / (name.get<std::string>() + ".csv"));
+      }
+    }
+  }
   std::ofstream(directory / "specimen.toml") << synthetic_specimen_text() << kSearch;
   const Case specimen = true_specimen(directory, spec);
   auto hidden = [&](Mechanism m) { return std::find(spec.hidden.begin(), spec.hidden.end(), m) != spec.hidden.end(); };
@@ -258,6 +267,8 @@ void add_synthetic_drive_test(const std::filesystem::path& directory, const Synt
   const Case specimen = true_specimen(directory, spec);
   const ModelVariant truth(specimen, spec.hidden, true);
   write_test(directory, number, " (" + drive.description + ")", clean, truth, true_values(truth, spec.seed), same_noise);
+  j["added_tests"].push_back(name);
+  std::ofstream(truth_file) << j.dump(2) << "\n";
 }
 
 }  // namespace caskdem::diagnosis

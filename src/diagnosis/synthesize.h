@@ -52,7 +52,8 @@ SyntheticTruth write_synthetic_measured_set(const std::filesystem::path& directo
 // normal law; the noise levels are the set's, from truth.json): the true model driven by a
 // table drive file (a plan's drive-1.csv), the table still vertically, with the noise of
 // stream (seed, NUMBER - 1), as the laboratory would run a proposed test. Throws InputError
-// naming the file on a bad drive, another spec or a test that exists.
+// naming the file on a bad drive, another spec or a test that exists. truth.json lists the
+// added tests ("added_tests"), and writing the set again removes them.
 void add_synthetic_drive_test(const std::filesystem::path& directory, const SyntheticSpec& spec,
                               const std::filesystem::path& drive_file, int number);
 
