@@ -43,13 +43,14 @@ std::size_t shown(const TestPlan& plan) { return std::min<std::size_t>(kProposed
 
 std::string drive_file_name(std::size_t rank) { return "drive-" + std::to_string(rank + 1) + ".csv"; }
 
-// The table drive of a proposed test, noise-free, in the measured tests' CSV layout (what the
-// table operator runs; the laboratory's recording of it is the new test's table channel).
+// The table drive of a proposed test in the measured tests' CSV layout (what the table operator
+// runs; the laboratory's recording of it is the new test's table channel).
 void write_drive(const std::filesystem::path& file, std::size_t rank, const ProposedTest& p) {
   std::ofstream out(file);
   out << "# proposed test " << rank + 1 << ": " << p.description << "\n"
-      << "# the table drive, noise-free; model scale, SI units (s, m/s^2), every " << p.input.time_step << " s; "
-      << "the table does not move vertically\n"
+      << "# the table drive"
+      << (p.kind == "record" ? " (the measured table channel scaled, its sensor noise included)" : ", noise-free")
+      << "; model scale, SI units (s, m/s^2), every " << p.input.time_step << " s; the table does not move vertically\n"
       << "t,table_acc\n";
   char line[64];
   for (std::size_t k = 0; k < p.drive.size(); ++k) {
@@ -84,8 +85,8 @@ std::string plan_markdown(const TestPlan& plan) {
      << "diagnosis judges a measured test (sensor noise at this set's levels, the test's predictability, each fit's "
      << "standard errors): an expected log-likelihood ratio. Above 10.8 one such test decides between the closest "
      << "pair at the 0.001 level; below 1 it cannot tell them apart.\n\n"
-     << "The table drive of each (noise-free, model scale, SI) is in drive-1.csv to drive-" << shown(plan)
-     << ".csv.\n\n"
+     << "The table drive of each (model scale, SI; a sine's noise-free, a record's the measured channel scaled) is in "
+     << "drive-1.csv to drive-" << shown(plan) << ".csv.\n\n"
      << "| rank | test | separation | closest pair |";
   for (const PlanCandidate& c : plan.candidates) md << " " << c.name << ": peak rotation (rad), max sliding (mm) |";
   md << "\n|---|---|---|---|";
@@ -157,7 +158,13 @@ void write_plan(const std::filesystem::path& directory, const TestPlan& plan, bo
   j["wall_time_s"] = plan.wall_seconds;
   std::ofstream(directory / "plan.json") << j.dump(2) << "\n";
   std::ofstream(directory / "plan.md") << "# Proposed tests\n\n" << plan_markdown(plan);
-  for (std::size_t t = 0; t < shown(plan); ++t) write_drive(directory / drive_file_name(t), t, plan.tests[t]);
+  for (std::size_t t = 0; t < kProposedTests; ++t) {  // an earlier plan's drives beyond this one's go
+    if (t < shown(plan)) {
+      write_drive(directory / drive_file_name(t), t, plan.tests[t]);
+    } else {
+      std::filesystem::remove(directory / drive_file_name(t));
+    }
+  }
 
   {  // closed before the plot reads it
     hdf5::Group root = hdf5::create_file(directory / "plan-histories.h5");

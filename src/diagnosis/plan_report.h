@@ -3,8 +3,8 @@
 // feasible test tried, ranked, with the candidates and the table limits), plan.md (the best
 // three, what each candidate predicts for them, and how to read the separation),
 // plan-histories.h5 and plan.png (the candidates' predicted histories of the best three), and
-// drive-1.csv ... drive-3.csv (the best three's table drives, noise-free: what the laboratory
-// runs). read_drive reads a drive back (synthesize-measured --drive: the loop closed).
+// drive-1.csv ... drive-3.csv (the best three's table drives: what the laboratory runs).
+// read_drive reads a drive back (synthesize-measured --drive: the loop closed).
 
 #include <filesystem>
 #include <string>

@@ -45,7 +45,8 @@ struct ProposedTest {
   double peak_velocity = 0.0;                  // m/s (sines)
   double peak_displacement = 0.0;              // m (sines)
   double scale = 0.0;                          // of the record (records)
-  std::vector<double> drive;                   // m/s^2: the table drive, noise-free, at input.time_step
+  std::vector<double> drive;                   // m/s^2: the table drive at input.time_step (a sine's noise-free,
+                                               // a record's the measured channel scaled)
   MeasuredTest input;                          // time and table acceleration (the drive plus the set's table noise)
   std::vector<std::vector<double>> pair_loss;  // J_ab, [a][b] (0 on the diagonal)
   double separation = 0.0;                     // min over pairs of min(J_ab, J_ba)
