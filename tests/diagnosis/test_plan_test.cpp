@@ -114,6 +114,13 @@ TEST(PlanTest, SeparatesTwoFrictionsWithATestThatSlidesOnlyOne) {
     EXPECT_LT(worst, 1e-8 * plan.tests[rank - 1].peak_acceleration);
   }
   EXPECT_FALSE(std::filesystem::exists(out.path() / "drive-4.csv"));
+  // A plan of one test written over it leaves one drive.
+  TestPlan shorter = plan;
+  shorter.tests.resize(1);
+  write_plan(out.path(), shorter, false);
+  EXPECT_TRUE(std::filesystem::exists(out.path() / "drive-1.csv"));
+  EXPECT_FALSE(std::filesystem::exists(out.path() / "drive-2.csv"));
+  EXPECT_FALSE(std::filesystem::exists(out.path() / "drive-3.csv"));
   // Below both onsets neither candidate slides or rocks: those tests separate them least.
   for (const ProposedTest& p : plan.tests) {
     if (p.peak_acceleration < 0.1 * units::standard_gravity) {
