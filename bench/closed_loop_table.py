@@ -29,6 +29,11 @@ def wrong_mechanism(case, cause):
     return not right(case, cause) and cause not in NOT_A_MECHANISM
 
 
+def seeds_of(rows):
+    seeds = [int(r["seed"]) for r in rows]
+    return str(seeds[0]) if len(seeds) == 1 else seeds_text(seeds)
+
+
 def rate(k, n):
     low, high = clopper_pearson(k, n)
     return "%d of %d (%.0f to %.0f %%)" % (k, n, 100 * low, 100 * high)
@@ -41,8 +46,9 @@ def main():
     present = set(r["hidden"] for r in rows)
     cases = [c for c in ORDER if c in present] + sorted(present - set(ORDER))
     print("| hidden | seeds | right before | right after, the proposed test added | wrong mechanism "
-          "(before, after) | answers that changed (seed: before -> after; the test proposed) |")
-    print("|---|---|---|---|---|---|")
+          "(before, after) | hidden among the plan's candidates | answers that changed (seed: before -> after; "
+          "the test proposed, its separation) |")
+    print("|---|---|---|---|---|---|---|")
     totals = {"named": [0, 0, 0], "null": [0, 0, 0], "wrong": [0, 0, 0]}
     for case in cases:
         mine = sorted((r for r in rows if r["hidden"] == case), key=lambda r: int(r["seed"]))
@@ -50,12 +56,14 @@ def main():
         after = sum(right(case, r["cause_after"]) for r in mine)
         wrong = (sum(wrong_mechanism(case, r["cause_before"]) for r in mine),
                  sum(wrong_mechanism(case, r["cause_after"]) for r in mine))
-        changes = ["%s: %s -> %s (%s)" % (r["seed"], r["cause_before"], r["cause_after"], r["proposed"])
+        changes = ["%s: %s -> %s (%s; %s)" % (r["seed"], r["cause_before"], r["cause_after"], r["proposed"],
+                                              r["separation"])
                    for r in mine if r["cause_before"] != r["cause_after"]]
+        among = "-" if case == "none" else "%d of %d" % (sum(case in r["candidates"].split() for r in mine), len(mine))
         label = "none (baseline + noise)" if case == "none" else "`%s`" % case
-        print("| %s | %s | %s | %s | %d, %d | %s |" % (label, seeds_text([int(r["seed"]) for r in mine]),
-                                                      rate(before, len(mine)), rate(after, len(mine)), wrong[0],
-                                                      wrong[1], "; ".join(changes) or "-"))
+        print("| %s | %s | %s | %s | %d, %d | %s | %s |" % (label, seeds_of(mine),
+                                                           rate(before, len(mine)), rate(after, len(mine)), wrong[0],
+                                                           wrong[1], among, "; ".join(changes) or "-"))
         key = "null" if case == "none" else "named"
         totals[key][0] += before
         totals[key][1] += after
