@@ -3,10 +3,10 @@
 # runs the first proposed test (the generator drives the same hidden cask, same seed and noise
 # model, with the plan's drive-1.csv) and the set, that test added, is diagnosed again. The data
 # come from the independent generator (tests/independent: six tests, the added one test7), or
-# with OWN=1 from caskdem synthesize-measured (eight tests, the added one test9). One CSV row per data set: the answer before and
-# after, the test proposed and its separation, and the wall time of each diagnosis (the first
-# with its plan) (bench/success_table.py --closed-loop makes the
-# rates, before and after, with their intervals).
+# with OWN=1 from caskdem synthesize-measured (eight tests, the added one test9). One CSV row per
+# data set: the answer before and after, the test proposed and its separation, and the wall time
+# of each diagnosis (the first with its plan); bench/closed_loop_table.py makes the rates, before
+# and after, with their intervals.
 #
 #   bench/closed_loop.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS]
 #
@@ -24,7 +24,8 @@ first=${4:-2001}
 effects=${5:-"none velocity_dependent_friction amplitude_dependent_restitution eccentric_mass base_imperfection vertical_excitation floor_compliance out_of_plane_loss sensor_delay"}
 caskdem="$build/src/caskdem"
 if [ -z "${OWN:-}" ]; then GENERATOR="$build/tests/independent/caskdem_independent_data"; else unset GENERATOR; fi
-. "$(dirname "$0")/synthetic_sets.sh"
+here=$(dirname "$0")
+. "$here/synthetic_sets.sh"
 
 # Test ADDED of the set in DIR (hidden EFFECT, SEED) driven by DRIVE, by the generator that made it.
 add_test() {
@@ -37,7 +38,7 @@ add_test() {
     "$caskdem" synthesize-measured --out "$dir" --seed "$seed" --effect "$effect" --drive "$drive" --test 9 >/dev/null
   fi
 }
-[ -s "$out" ] || echo "hidden,seed,cause_before,cause_after,footprint_before,footprint_after,proposed,separation,closest_pair,candidates,wall_before_s,wall_after_s" >"$out"
+[ -s "$out" ] || /usr/bin/python3 "$here/closed_loop_row.py" --header >"$out"
 
 loop_set() {
   dir=$1 effect=$2 seed=$3
@@ -50,22 +51,11 @@ loop_set() {
       --no-plan >/dev/null
   fi
   end=$(date +%s)
-  /usr/bin/python3 - "$dir" "$effect" "$seed" $((middle - start)) $((end - middle)) >>"$out" <<'PY'
-import json, os, sys
-directory, effect, seed, wall_before, wall_after = sys.argv[1:6]
-before = json.load(open(os.path.join(directory, "before", "diagnosis.json")))
-after_file = os.path.join(directory, "after", "diagnosis.json")
-after = json.load(open(after_file)) if os.path.exists(after_file) else None
-plan_file = os.path.join(directory, "before", "plan.json")
-plan = json.load(open(plan_file)) if os.path.exists(plan_file) else {"tests": [], "candidates": []}
-best = plan["tests"][0] if plan["tests"] and after else None
-candidates = " ".join(c["name"] for c in plan["candidates"])
-fields = [effect, seed, before["cause"], (after or before)["cause"], before.get("footprint") or "",
-          (after or before).get("footprint") or "",
-          '"%s"' % best["description"].replace('"', "'") if best else "", "%.3g" % best["separation"] if best else "",
-          best["closest_pair"] if best else "", candidates, wall_before, wall_after if after else ""]
-print(",".join(fields))
-PY
+  plan="$dir/before/plan.json" after="$dir/after/diagnosis.json"
+  [ -f "$plan" ] || plan=-
+  [ -f "$after" ] || after=-
+  /usr/bin/python3 "$here/closed_loop_row.py" "$effect" "$seed" "$dir/before/diagnosis.json" "$plan" "$after" \
+    $((middle - start)) "$([ "$after" = - ] || echo $((end - middle)))" >>"$out"
   if [ -n "${KEEP:-}" ]; then
     mkdir -p "$KEEP"
     cp "$dir/before/diagnosis.json" "$KEEP/$effect-$seed-before.json"

@@ -6,7 +6,8 @@
 Per hidden case, the answers before and after the first proposed test was run and added: how
 many were right (for the null: `none`, or `footprint` where the stated footprint is wrong, as
 the issue of record counts it), each with its 95 % Clopper-Pearson interval, and how many named a
-wrong mechanism; then the answers that changed. Last, the totals the acceptance rates are read
+wrong mechanism; how the hidden mechanism's held-out gain moved with the added test (where the
+rows have it: bench/closed_loop_row.py); then the answers that changed. Last, the totals the acceptance rates are read
 from: hidden effects named, nulls right and wrong mechanisms, before and after.
 """
 import csv
@@ -34,6 +35,22 @@ def seeds_of(rows):
     return str(seeds[0]) if len(seeds) == 1 else seeds_text(seeds)
 
 
+def median(values):
+    values = sorted(values)
+    middle = len(values) // 2
+    return values[middle] if len(values) % 2 else 0.5 * (values[middle - 1] + values[middle])
+
+
+def gain_moved(rows):
+    """In how many sets the hidden mechanism's held-out gain rose once the proposed test was added."""
+    pairs = [(float(r["hidden_gain_before"]), float(r["hidden_gain_after"])) for r in rows
+             if r.get("hidden_gain_before") and r.get("hidden_gain_after")]
+    if not pairs:
+        return "-"
+    return "%d of %d (%.3g -> %.3g)" % (sum(a > b for b, a in pairs), len(pairs), median([b for b, _ in pairs]),
+                                        median([a for _, a in pairs]))
+
+
 def rate(k, n):
     low, high = clopper_pearson(k, n)
     return "%d of %d (%.0f to %.0f %%)" % (k, n, 100 * low, 100 * high)
@@ -46,9 +63,9 @@ def main():
     present = set(r["hidden"] for r in rows)
     cases = [c for c in ORDER if c in present] + sorted(present - set(ORDER))
     print("| hidden | seeds | right before | right after, the proposed test added | wrong mechanism "
-          "(before, after) | hidden among the plan's candidates | answers that changed (seed: before -> after; "
+          "(before, after) | hidden among the plan's candidates | hidden's held-out gain rose (median before -> after) | answers that changed (seed: before -> after; "
           "the test proposed, its separation) |")
-    print("|---|---|---|---|---|---|---|")
+    print("|---|---|---|---|---|---|---|---|")
     totals = {"named": [0, 0, 0], "null": [0, 0, 0], "wrong": [0, 0, 0]}
     for case in cases:
         mine = sorted((r for r in rows if r["hidden"] == case), key=lambda r: int(r["seed"]))
@@ -60,10 +77,11 @@ def main():
                                               r["separation"])
                    for r in mine if r["cause_before"] != r["cause_after"]]
         among = "-" if case == "none" else "%d of %d" % (sum(case in r["candidates"].split() for r in mine), len(mine))
+        moved = gain_moved(mine) if case != "none" else "-"
         label = "none (baseline + noise)" if case == "none" else "`%s`" % case
-        print("| %s | %s | %s | %s | %d, %d | %s | %s |" % (label, seeds_of(mine),
-                                                           rate(before, len(mine)), rate(after, len(mine)), wrong[0],
-                                                           wrong[1], among, "; ".join(changes) or "-"))
+        print("| %s | %s | %s | %s | %d, %d | %s | %s | %s |" % (label, seeds_of(mine), rate(before, len(mine)),
+                                                                rate(after, len(mine)), wrong[0], wrong[1], among,
+                                                                moved, "; ".join(changes) or "-"))
         key = "null" if case == "none" else "named"
         totals[key][0] += before
         totals[key][1] += after
@@ -81,7 +99,7 @@ def main():
     if times:
         times.sort()
         print("Wall time of a diagnosis (s): median %.0f, largest %.0f, over %d diagnoses." %
-              (times[len(times) // 2], times[-1], len(times)))
+              (median(times), times[-1], len(times)))
 
 
 if __name__ == "__main__":
