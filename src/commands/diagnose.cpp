@@ -193,16 +193,18 @@ void add_diagnose(CLI::App& app) {
     cmd->add_option("--seed", options->seed, "Seed of the true values and the noise")->check(seed_number());
     // Each noise can be switched off alone, to see what it does to a diagnosis: with the table's
     // off, the true values reproduce every response channel to its own noise.
-    cmd->add_option("--rotation-noise", options->noise.rotation_noise, "Standard deviation of the rotation channel's noise, rad")
-        ->check(number_within("a rotation noise in rad", 0.0, 0.1))
-        ->capture_default_str();
-    cmd->add_option("--slide-noise", options->noise.slide_noise, "Standard deviation of the sliding channel's noise, m")
-        ->check(number_within("a sliding noise in m", 0.0, 0.1))
-        ->capture_default_str();
-    cmd->add_option("--table-noise", options->noise.table_noise,
-                    "Standard deviation of the table channels' noise (horizontal and vertical), m/s^2")
-        ->check(number_within("a table noise in m/s^2", 0.0, 10.0))
-        ->capture_default_str();
+    auto* rotation_noise = cmd->add_option("--rotation-noise", options->noise.rotation_noise,
+                                           "Standard deviation of the rotation channel's noise, rad")
+                               ->check(number_within("a rotation noise in rad", 0.0, 0.1))
+                               ->capture_default_str();
+    auto* slide_noise = cmd->add_option("--slide-noise", options->noise.slide_noise,
+                                        "Standard deviation of the sliding channel's noise, m")
+                            ->check(number_within("a sliding noise in m", 0.0, 0.1))
+                            ->capture_default_str();
+    auto* table_noise = cmd->add_option("--table-noise", options->noise.table_noise,
+                                        "Standard deviation of the table channels' noise (horizontal and vertical), m/s^2")
+                            ->check(number_within("a table noise in m/s^2", 0.0, 10.0))
+                            ->capture_default_str();
     // The loop closed: a proposed test (a plan's drive file) run on the same hidden specimen.
     auto* drive = cmd->add_option("--drive", options->drive,
                                   "Add one test to the set in --out (made with the same --effect and --seed): the "
@@ -213,6 +215,8 @@ void add_diagnose(CLI::App& app) {
                          [](double x) { return x >= 1.0 && x <= 999.0 && x == std::floor(x); }, "TEST"));
     drive->needs(test);
     test->needs(drive);
+    // An added test has the set's noise levels (truth.json), whatever these say.
+    for (CLI::Option* noise : {rotation_noise, slide_noise, table_noise}) drive->excludes(noise);
     cmd->callback([options]() {
       diagnosis::SyntheticSpec spec = options->noise;
       spec.seed = options->seed;

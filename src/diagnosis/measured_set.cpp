@@ -24,10 +24,8 @@ int whole_number_in(TableReader& t, std::string_view key, int fallback, int low,
   return static_cast<int>(value);
 }
 
-}  // namespace
-
-Case read_specimen(const std::filesystem::path& specimen, DiagnosisSettings* settings) {
-  const toml::table document = parse_toml_file(specimen);
+// The specimen from its parsed document (`specimen` names it in errors).
+Case specimen_from(const toml::table& document, const std::filesystem::path& specimen, DiagnosisSettings* settings) {
   TableReader root(document, specimen, "");
   Case c;
   c.file = specimen;
@@ -108,6 +106,16 @@ Case read_specimen(const std::filesystem::path& specimen, DiagnosisSettings* set
   }
   root.reject_unknown_keys();
   return c;
+}
+
+}  // namespace
+
+Case read_specimen(const std::filesystem::path& specimen, DiagnosisSettings* settings) {
+  return specimen_from(parse_toml_file(specimen), specimen, settings);
+}
+
+Case read_specimen_text(std::string_view text, const std::filesystem::path& named_as, DiagnosisSettings* settings) {
+  return specimen_from(toml::parse(text, named_as.string()), named_as, settings);
 }
 
 namespace {

@@ -18,6 +18,7 @@
 #include <filesystem>
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "casefile/case_file.h"
@@ -68,5 +69,8 @@ MeasuredSet read_measured_set(const std::filesystem::path& directory);
 
 // The specimen file alone (and its [diagnosis] settings).
 Case read_specimen(const std::filesystem::path& file, DiagnosisSettings* settings);
+
+// The same from the file's text, read as if it were the file `named_as`.
+Case read_specimen_text(std::string_view text, const std::filesystem::path& named_as, DiagnosisSettings* settings);
 
 }  // namespace caskdem::diagnosis

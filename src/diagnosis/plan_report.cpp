@@ -10,8 +10,10 @@
 
 #include "caskdem/build_info.h"
 #include "core/error.h"
+#include "core/text.h"
 #include "io/hdf5_file.h"
 #include "io/run_output.h"
+#include "motion/record.h"
 
 namespace caskdem::diagnosis {
 
@@ -54,7 +56,8 @@ void write_drive(const std::filesystem::path& file, std::size_t rank, const Prop
       << "t,table_acc\n";
   char line[64];
   for (std::size_t k = 0; k < p.drive.size(); ++k) {
-    std::snprintf(line, sizeof line, "%.6f,%.9g\n", double(k) * p.input.time_step, p.drive[k]);
+    std::snprintf(line, sizeof line, "%.*f,%.9g\n", time_decimals(p.input.time_step), double(k) * p.input.time_step,
+                  p.drive[k]);
     out << line;
   }
 }
@@ -84,10 +87,13 @@ std::string plan_markdown(const TestPlan& plan) {
      << "smallest, over pairs of candidates, of the loss one would take were the other the truth, judged as the "
      << "diagnosis judges a measured test (sensor noise at this set's levels, the test's predictability, each fit's "
      << "standard errors): an expected log-likelihood ratio. Above 10.8 one such test decides between the closest "
-     << "pair at the 0.001 level; below 1 it cannot tell them apart.\n\n"
-     << "The table drive of each (model scale, SI; a sine's noise-free, a record's the measured channel scaled) is in "
-     << "drive-1.csv to drive-" << shown(plan) << ".csv.\n\n"
-     << "| rank | test | separation | closest pair |";
+     << "pair at the 0.001 level; below 1 it cannot tell them apart.\n\n";
+  if (shown(plan) > 0) {
+    md << "The table drive of " << (shown(plan) == 1 ? "the best" : "each of the best") << " (model scale, SI; a "
+       << "sine's noise-free, a record's the measured channel scaled) is in drive-1.csv"
+       << (shown(plan) == 1 ? "" : " to " + drive_file_name(shown(plan) - 1)) << ".\n\n";
+  }
+  md << "| rank | test | separation | closest pair |";
   for (const PlanCandidate& c : plan.candidates) md << " " << c.name << ": peak rotation (rad), max sliding (mm) |";
   md << "\n|---|---|---|---|";
   for (std::size_t c = 0; c < plan.candidates.size(); ++c) md << "---|";
@@ -189,14 +195,19 @@ void write_plan(const std::filesystem::path& directory, const TestPlan& plan, bo
   }
 }
 
+int time_decimals(double time_step) {
+  return std::abs(1e3 * time_step - std::round(1e3 * time_step)) < 1e-9 ? 3 : 9;
+}
+
 TableDrive read_drive(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) fail_at(file, 0, "cannot be read; expected a table drive (drive-1.csv of a plan)");
   TableDrive drive;
+  double first_step = 0.0, previous = 0.0;
+  long last_line = 0;
   std::string line;
   long number = 0;
   bool header = false;
-  double previous = 0.0;
   while (std::getline(in, line)) {
     ++number;
     if (!line.empty() && line.back() == '\r') line.pop_back();
@@ -206,7 +217,7 @@ TableDrive read_drive(const std::filesystem::path& file) {
       continue;
     }
     if (!header) {
-      if (line.rfind("t,table_acc", 0) != 0) fail_at(file, number, "expected the header 't,table_acc'");
+      if (line != "t,table_acc") fail_at(file, number, "expected the header 't,table_acc', not '" + line + "'");
       header = true;
       continue;
     }
@@ -216,13 +227,25 @@ TableDrive read_drive(const std::filesystem::path& file) {
       fail_at(file, number, "expected a time in s and a table acceleration in m/s^2, not '" + line + "'");
     const std::size_t k = drive.acceleration.size();
     if (k == 0 && t != 0.0) fail_at(file, number, "expected the drive to start at t = 0");
-    if (k == 1) drive.time_step = t;
-    if (k >= 1 && (!(drive.time_step > 0.0) || std::abs(t - previous - drive.time_step) > 1e-6 * drive.time_step))
+    if (k == 1) first_step = t;
+    // Printed times are rounded: each interval is the first one to within 1 % of it.
+    if (k >= 1 && !(first_step > 0.0 && std::abs(t - previous - first_step) <= 0.01 * first_step))
       fail_at(file, number, "expected samples evenly spaced in time");
     previous = t;
+    last_line = number;
     drive.acceleration.push_back(a);
   }
   if (drive.acceleration.size() < 2) fail_at(file, 0, "expected at least two samples after the header");
+  // The step from the span, which rounding hardly touches; a drive is as fine and as long as a
+  // measured test may be.
+  drive.time_step = previous / double(drive.acceleration.size() - 1);
+  if (!(drive.time_step >= kSmallestDriveStep) || drive.time_step > motion::kLargestRecordTimeStep)
+    fail_at(file, last_line, "the drive's step is " + number_text(drive.time_step) + " s; expected " +
+                                    number_text(kSmallestDriveStep) + " to " + number_text(motion::kLargestRecordTimeStep) +
+                                    " s (is t in seconds?)");
+  if (previous > motion::kLongestRecord)
+    fail_at(file, last_line, "the drive lasts " + number_text(previous) + " s; expected at most " +
+                                    number_text(motion::kLongestRecord) + " s");
   if (drive.description.empty()) drive.description = "table drive " + file.filename().string();
   return drive;
 }

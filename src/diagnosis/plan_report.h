@@ -23,6 +23,11 @@ void write_plan(const std::filesystem::path& directory, const TestPlan& plan, bo
 // the diagnosis report.
 std::string plan_markdown(const TestPlan& plan);
 
+// The decimals a time is printed with in a drive or a synthetic test: whole milliseconds (the
+// programme's 200 Hz) to the millisecond, any other step to the nanosecond, so that a reader
+// recovers the step from the span.
+int time_decimals(double time_step);
+
 // A table drive file: "# " comment lines (the first says what the test is), the header
 // "t,table_acc", then samples evenly spaced from t = 0, in s and m/s^2.
 struct TableDrive {
@@ -30,6 +35,9 @@ struct TableDrive {
   double time_step = 0.0;            // s
   std::vector<double> acceleration;  // m/s^2
 };
+
+// A drive's step: at least a microsecond, as a measured test's (measured_test.cpp).
+inline constexpr double kSmallestDriveStep = 1e-6;  // s
 
 // Throws InputError naming the file and line, and what was expected.
 TableDrive read_drive(const std::filesystem::path& file);

@@ -1,5 +1,6 @@
 #include "diagnosis/synthesize.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <fstream>
@@ -162,12 +163,10 @@ void write_test(const std::filesystem::path& directory, int number, const std::s
   csv << "# synthetic shaking-table test " << name << description << ": SI units, "
       << std::lround(1.0 / clean.time_step) << " Hz\n";
   csv << "t,table_acc,theta,slide,table_acc_v\n";
-  // Times to the millisecond, as the programme's tests at 200 Hz; a finer drive's to the microsecond.
-  const bool whole_milliseconds = std::abs(1e3 * clean.time_step - std::round(1e3 * clean.time_step)) < 1e-9;
-  const char* format = whole_milliseconds ? "%.3f,%.9g,%.9g,%.9g,%.9g\n" : "%.6f,%.9g,%.9g,%.9g,%.9g\n";
+  const int decimals = time_decimals(clean.time_step);
   char line[256];
   for (std::size_t k = 0; k < clean.time.size(); ++k) {
-    std::snprintf(line, sizeof line, format, clean.time[k],
+    std::snprintf(line, sizeof line, "%.*f,%.9g,%.9g,%.9g,%.9g\n", decimals, clean.time[k],
                   clean.table_acceleration[k] + spec.table_noise * normal(spec.seed, i, k, 0),
                   response.rotation[k] + spec.rotation_noise * normal(spec.seed, i, k, 1),
                   response.slide[k] + spec.slide_noise * normal(spec.seed, i, k, 2),
@@ -176,9 +175,10 @@ void write_test(const std::filesystem::path& directory, int number, const std::s
   }
 }
 
-// The specimen as the data were made: the stated one on the spec's normal law.
+// The specimen as the data were made: the stated one, as written (an edited specimen.toml states
+// another model, not another cask), on the spec's normal law.
 Case true_specimen(const std::filesystem::path& directory, const SyntheticSpec& spec) {
-  Case specimen = read_specimen(directory / "specimen.toml", nullptr);
+  Case specimen = read_specimen_text(synthetic_specimen_text() + kSearch, directory / "specimen.toml", nullptr);
   specimen.model.normal_law = spec.normal_law;
   return specimen;
 }
@@ -223,6 +223,7 @@ SyntheticTruth write_synthetic_measured_set(const std::filesystem::path& directo
   j["hidden"] = out.hidden;
   j["normal_law"] = normal_law_name(spec.normal_law);
   for (const auto& [name, value] : out.parameters) j["parameters"][name] = value;
+  j["generator"] = "caskdem";
   j["seed"] = spec.seed;
   j["noise"] = {{"rotation_rad", spec.rotation_noise}, {"slide_m", spec.slide_noise}, {"table_m_s2", spec.table_noise}};
   std::ofstream(directory / "truth.json") << j.dump(2) << "\n";
@@ -235,28 +236,38 @@ void add_synthetic_drive_test(const std::filesystem::path& directory, const Synt
   std::ifstream in(truth_file);
   if (!in) throw InputError(truth_file.string() + ": cannot be read; expected a set written by synthesize-measured");
   nlohmann::json j;
+  SyntheticSpec same_noise = spec;  // the set's own noise levels
+  std::vector<std::string> made_with;
+  std::uint64_t made_seed = 0;
+  std::string made_law;
   try {
     j = nlohmann::json::parse(in);
+    if (j.value("generator", std::string("caskdem")) != "caskdem")
+      throw InputError(truth_file.string() + ": the set was made by the \"" + j["generator"].get<std::string>() +
+                       "\" generator; expected a set written by caskdem synthesize-measured");
+    made_with = j.at("hidden").get<std::vector<std::string>>();
+    made_seed = j.at("seed").get<std::uint64_t>();
+    made_law = j.value("normal_law", std::string("linear"));
+    same_noise.rotation_noise = j.at("noise").at("rotation_rad").get<double>();
+    same_noise.slide_noise = j.at("noise").at("slide_m").get<double>();
+    same_noise.table_noise = j.at("noise").at("table_m_s2").get<double>();
   } catch (const nlohmann::json::exception& e) {
-    throw InputError(truth_file.string() + ": not valid JSON (" + e.what() + ")");
+    throw InputError(truth_file.string() + ": expected the truth.json synthesize-measured writes (" + e.what() + ")");
   }
   std::vector<std::string> hidden;
   for (Mechanism m : spec.hidden) hidden.push_back(mechanism_name(m));
-  const auto same = j.value("seed", std::uint64_t{0}) == spec.seed && j.value("hidden", std::vector<std::string>{}) == hidden &&
-                    j.value("normal_law", "linear") == normal_law_name(spec.normal_law);
-  if (!same) {
-    throw InputError(truth_file.string() + ": the set was made with seed " + std::to_string(j.value("seed", 0)) +
-                     " and hidden " + j.value("hidden", nlohmann::json::array()).dump() +
-                     "; expected the added test's --seed and --effect to be the same");
+  std::vector<std::string> made_sorted = made_with;
+  std::sort(hidden.begin(), hidden.end());  // the set lists them in the model's order, --effect in the user's
+  std::sort(made_sorted.begin(), made_sorted.end());
+  if (made_seed != spec.seed || made_sorted != hidden || made_law != normal_law_name(spec.normal_law)) {
+    throw InputError(truth_file.string() + ": the set was made with seed " + std::to_string(made_seed) + ", hidden " +
+                     nlohmann::json(made_with).dump() + " and the " + made_law +
+                     " normal law; expected the added test's seed, hidden mechanisms and normal law to be the set's");
   }
   const std::string name = "test" + std::to_string(number);
   if (number < 1 || std::filesystem::exists(directory / (name + ".csv"))) {
     throw InputError(directory.string() + ": expected a new test number, and " + name + " exists");
   }
-  SyntheticSpec same_noise = spec;  // the set's own noise levels
-  same_noise.rotation_noise = j.at("noise").at("rotation_rad").get<double>();
-  same_noise.slide_noise = j.at("noise").at("slide_m").get<double>();
-  same_noise.table_noise = j.at("noise").at("table_m_s2").get<double>();
 
   const TableDrive drive = read_drive(drive_file);
   MeasuredTest clean;

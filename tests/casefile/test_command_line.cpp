@@ -303,6 +303,8 @@ TEST_F(CommandLine, BadOptionValuesExitTwoNamingTheOption) {
            {"synthesize-measured --out " + out + " --drive d.csv", "--drive requires --test"},
            // The loop closed on a set that is not there: its truth.json is named.
            {"synthesize-measured --out " + out + " --drive d.csv --test 9", "truth.json: cannot be read"},
+           // An added test has the set's noise levels.
+           {"synthesize-measured --out " + out + " --drive d.csv --test 9 --slide-noise 0", "--slide-noise excludes --drive"},
            // Ignored before: the record was printed unscaled.
            {"motion none.csv --scale -1", "--scale: expected a finite number above zero"},
            {"motion none.csv --target-pga nan", "--target-pga: expected a finite number above zero"},

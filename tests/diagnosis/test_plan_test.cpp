@@ -9,6 +9,8 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <iterator>
+#include <numbers>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -121,6 +123,15 @@ TEST(PlanTest, SeparatesTwoFrictionsWithATestThatSlidesOnlyOne) {
   EXPECT_TRUE(std::filesystem::exists(out.path() / "drive-1.csv"));
   EXPECT_FALSE(std::filesystem::exists(out.path() / "drive-2.csv"));
   EXPECT_FALSE(std::filesystem::exists(out.path() / "drive-3.csv"));
+  // Read back, a drive is at its test's step, whole milliseconds or not (a table recorded at 1024 Hz).
+  for (const double step : {plan.tests[0].input.time_step, 1.0 / 1024.0}) {
+    shorter.tests[0].input.time_step = step;
+    write_plan(out.path(), shorter, false);
+    const TableDrive drive = read_drive(out.path() / "drive-1.csv");
+    EXPECT_NEAR(drive.time_step, step, 1e-12 * step);
+    ASSERT_EQ(drive.acceleration.size(), shorter.tests[0].drive.size());
+    EXPECT_NEAR(drive.acceleration.back(), shorter.tests[0].drive.back(), 1e-8 * shorter.tests[0].peak_acceleration);
+  }
   // Below both onsets neither candidate slides or rocks: those tests separate them least.
   for (const ProposedTest& p : plan.tests) {
     if (p.peak_acceleration < 0.1 * units::standard_gravity) {
@@ -230,6 +241,9 @@ TEST(PlanTest, ABadDriveOrAnotherSpecimenIsOneClearError) {
       {"t,table_acc\n0.1,0\n0.105,1\n", "drive.csv:2: expected the drive to start at t = 0"},
       {"t,table_acc\n0,0\n0.005,one\n", "drive.csv:3: expected a time in s and a table acceleration"},
       {"t,table_acc\n0,0\n", "expected at least two samples"},
+      {"t,table_acc,theta\n0,0,0\n0.005,1,0\n", "drive.csv:1: expected the header 't,table_acc'"},
+      {"t,table_acc\n0,0\n0.005,1,0\n", "drive.csv:3: expected a time in s and a table acceleration"},
+      {"t,table_acc\n0,0\n10,1\n20,2\n", "drive.csv:4: the drive's step is 10 s; expected 1e-06 to 0.1 s"},
   };
   for (const auto& d : drives) {
     std::ofstream(dir / "drive.csv") << d.text;
@@ -246,6 +260,48 @@ TEST(PlanTest, ABadDriveOrAnotherSpecimenIsOneClearError) {
   EXPECT_THROW(add_synthetic_drive_test(dir, other, dir / "drive.csv", 9), InputError);
   EXPECT_THROW(add_synthetic_drive_test(dir, spec, dir / "drive.csv", 3), InputError);  // test3 exists
   EXPECT_FALSE(std::filesystem::exists(dir / "test9.csv"));
+  // A truth.json that is not synthesize-measured's: another generator's, or one cut short.
+  const std::string truth = [&] {
+    std::ifstream in(dir / "truth.json");
+    return std::string(std::istreambuf_iterator<char>(in), {});
+  }();
+  for (const std::string& other_truth : {std::string("{\"generator\": \"independent\", \"seed\": 12, \"hidden\": []}"),
+                                         std::string("{\"seed\": \"twelve\", \"hidden\": []}"),
+                                         std::string("{\"seed\": 12, \"hidden\": []}")}) {
+    std::ofstream(dir / "truth.json") << other_truth;
+    try {
+      add_synthetic_drive_test(dir, spec, dir / "drive.csv", 9);
+      ADD_FAILURE() << "accepted: " << other_truth;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find("truth.json: "), std::string::npos) << e.what();
+    }
+  }
+  std::ofstream(dir / "truth.json") << truth;
+}
+
+TEST(PlanTest, ADriveKeepsItsStepAndTheSetItsHiddenMechanismsInAnyOrder) {
+  testing::TestDirectory directory, drives("drives");
+  const auto dir = directory.path();
+  SyntheticSpec spec;
+  spec.seed = 14;
+  spec.hidden = {Mechanism::vertical_excitation, Mechanism::eccentric_mass};  // not the model's order
+  write_synthetic_measured_set(dir, spec);
+  // A drive printed to the microsecond at 1024 Hz, each time off its place by up to half a microsecond.
+  {
+    std::ofstream drive(drives.path() / "drive.csv");
+    drive << "# a 2 Hz sine at 1024 Hz\nt,table_acc\n";
+    char line[64];
+    for (int k = 0; k <= 4096; ++k) {
+      const double t = k / 1024.0;
+      std::snprintf(line, sizeof line, "%.6f,%.9g\n", t, 2.0 * std::sin(2.0 * std::numbers::pi * 2.0 * t));
+      drive << line;
+    }
+  }
+  EXPECT_NEAR(read_drive(drives.path() / "drive.csv").time_step, 1.0 / 1024.0, 1e-9 / 1024.0);
+  add_synthetic_drive_test(dir, spec, drives.path() / "drive.csv", 9);
+  const MeasuredTest added = read_measured_test(dir / "test9.csv");
+  EXPECT_NEAR(added.time_step, 1.0 / 1024.0, 1e-6 / 1024.0);  // its times printed to the nanosecond
+  EXPECT_EQ(read_measured_set(dir).tests.size(), 9u);
 }
 
 }  // namespace

@@ -28,6 +28,7 @@ int usage(const std::string& problem) {
 
 int main(int argc, char** argv) {
   std::string out, effect, seed_text, footprint = "distributed", drive, test_text;
+  bool footprint_given = false;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     std::string* target = arg == "--out"         ? &out
@@ -40,6 +41,7 @@ int main(int argc, char** argv) {
     if (!target) return usage("unknown argument '" + arg + "'");
     if (i + 1 >= argc) return usage(arg + " needs a value");
     *target = argv[++i];
+    footprint_given = footprint_given || target == &footprint;
   }
   if (out.empty()) return usage("--out is required");
   if (effect.empty()) return usage("--effect is required");
@@ -58,6 +60,8 @@ int main(int argc, char** argv) {
     return usage("--footprint must be distributed, gyration or radius, not '" + footprint + "'");
 
   if (drive.empty() != test_text.empty()) return usage("--drive and --test go together");
+  if (!drive.empty() && footprint_given)
+    return usage("--footprint is the set's, chosen when it was written; expected it without --drive");
   if (!drive.empty()) {
     int number = 0;
     try {

@@ -6,6 +6,7 @@
 #include <functional>
 #include <numbers>
 #include <stdexcept>
+#include <vector>
 
 #include <nlohmann/json.hpp>
 
@@ -167,16 +168,17 @@ std::pair<TestSummary, nlohmann::json> write_test(const std::filesystem::path& d
 }
 
 // The drive file a plan writes (caskdem plan-test: "# ..." lines, then "t,table_acc", then
-// uniformly spaced samples in s and m/s^2).
+// uniformly spaced samples in s and m/s^2). Printed times are rounded: each interval is the first
+// one to within 1 % of it, and the step is the span over the samples.
 Design drive_design(const std::filesystem::path& file) {
   std::ifstream in(file);
   if (!in) throw std::runtime_error(file.string() + ": cannot be read");
   Design d;
   Accelerogram drive;
+  double first_step = 0.0, previous = 0.0;
   std::string line, description;
   int number = 0;
   bool header = false;
-  double first_time = 0.0, last_time = 0.0;
   while (std::getline(in, line)) {
     ++number;
     const auto where = [&] { return file.string() + ": line " + std::to_string(number) + ": "; };
@@ -187,26 +189,24 @@ Design drive_design(const std::filesystem::path& file) {
       continue;
     }
     if (!header) {
-      if (line.rfind("t,table_acc", 0) != 0) throw std::runtime_error(where() + "expected the header 't,table_acc'");
+      if (line != "t,table_acc") throw std::runtime_error(where() + "expected the header 't,table_acc'");
       header = true;
       continue;
     }
     double t = 0.0, a = 0.0;
-    if (std::sscanf(line.c_str(), "%lf,%lf", &t, &a) != 2 || !std::isfinite(t) || !std::isfinite(a))
+    char rest = 0;
+    if (std::sscanf(line.c_str(), "%lf,%lf%c", &t, &a, &rest) != 2 || !std::isfinite(t) || !std::isfinite(a))
       throw std::runtime_error(where() + "expected a time and a table acceleration, not '" + line + "'");
-    if (drive.acceleration.empty()) {
-      first_time = t;
-    } else {
-      const double step = drive.acceleration.size() == 1 ? t - first_time : drive.time_step;
-      if (!(step > 0.0) || std::abs(t - last_time - step) > 1e-6 * step)
-        throw std::runtime_error(where() + "expected samples evenly spaced in time");
-      drive.time_step = step;
-    }
-    if (first_time != 0.0) throw std::runtime_error(where() + "expected the drive to start at t = 0");
-    last_time = t;
+    const std::size_t k = drive.acceleration.size();
+    if (k == 0 && t != 0.0) throw std::runtime_error(where() + "expected the drive to start at t = 0");
+    if (k == 1) first_step = t;
+    if (k >= 1 && !(first_step > 0.0 && std::abs(t - previous - first_step) <= 0.01 * first_step))
+      throw std::runtime_error(where() + "expected samples evenly spaced in time");
+    previous = t;
     drive.acceleration.push_back(a);
   }
   if (drive.acceleration.size() < 2) throw std::runtime_error(file.string() + ": expected at least two samples");
+  drive.time_step = previous / double(drive.acceleration.size() - 1);
   d.description = description.empty() ? "table drive " + file.filename().string() : description;
   d.duration = drive.duration();
   d.horizontal = drive;  // the table does not move vertically: no vertical_shape
@@ -228,6 +228,14 @@ MeasuredSetResult write_independent_measured_set(const std::filesystem::path& di
     for (int i = 1; i <= static_cast<int>(designs.size()); ++i) chosen.push_back(i);
 
   std::filesystem::create_directories(directory);
+  // Tests an earlier --drive added to a set here would be read as tests of this one.
+  if (std::ifstream earlier(directory / "truth.json"); earlier) {
+    const nlohmann::json old = nlohmann::json::parse(earlier, nullptr, false);
+    if (old.is_object() && old.contains("tests") && old["tests"].is_array())
+      for (const auto& test : old["tests"])
+        if (test.is_object() && test.contains("drive_file") && test.contains("name") && test["name"].is_string())
+          std::filesystem::remove(directory / (test["name"].get<std::string>() + ".csv"));
+  }
   std::ofstream(directory / "specimen.toml") << specimen_text(options.footprint);
 
   const CylinderModel model(truth.cask);

@@ -276,8 +276,11 @@ TEST(MeasuredSet, ATestAddedFromItsOwnDriveMatchesTheProgrammesTest) {
   EXPECT_EQ(rows(a), rows(b));
   const auto d = column_differences(dir / "test4.csv", dir / "test7.csv");
   EXPECT_LT(d[1], 10 * 0.003 + 0.008 * 9.87);  // two noise draws (0.003 m/s^2 each) and the interpolation
-  // truth.json lists the added test.
+  // truth.json lists the added test; written again, the set is its own tests alone.
   EXPECT_NE(slurp(dir / "truth.json").find("\"test7\""), std::string::npos);
+  write_independent_measured_set(dir, "eccentric_mass", 5, options);
+  EXPECT_FALSE(std::filesystem::exists(dir / "test7.csv"));
+  EXPECT_TRUE(std::filesystem::exists(dir / "test4.csv"));
 }
 
 TEST(MeasuredSet, ABadDriveIsRefusedNamingTheFileAndLine) {
@@ -315,6 +318,7 @@ TEST(Cli, BadArgumentsExitWithTwo) {
   EXPECT_EQ(run("--out " + out + " --effect none --seed 1 --drive d.csv"), 2);  // no --test
   EXPECT_EQ(run("--out " + out + " --effect none --seed 1 --drive d.csv --test 0"), 2);
   EXPECT_EQ(run("--out " + out + " --effect none --seed 1 --drive d.csv --test 7"), 2);  // no set there
+  EXPECT_EQ(run("--out " + out + " --effect none --seed 1 --footprint radius --drive d.csv --test 7"), 2);  // the set's own
   EXPECT_FALSE(std::filesystem::exists(out));
 }
 
