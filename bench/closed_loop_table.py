@@ -86,9 +86,10 @@ def main():
         totals[key][0] += before
         totals[key][1] += after
         totals[key][2] += len(mine)
-        totals["wrong"][0] += wrong[0]
-        totals["wrong"][1] += wrong[1]
-        totals["wrong"][2] += len(mine) if case != "none" else 0
+        if case != "none":  # a mechanism named on a null is counted against the null's rate above
+            totals["wrong"][0] += wrong[0]
+            totals["wrong"][1] += wrong[1]
+            totals["wrong"][2] += len(mine)
     print()
     for key, text in (("named", "Hidden effects named"), ("null", "Nulls answered none or footprint"),
                       ("wrong", "Hidden effects given a wrong mechanism")):
