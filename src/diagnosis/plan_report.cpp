@@ -89,9 +89,10 @@ std::string plan_markdown(const TestPlan& plan) {
      << "standard errors): an expected log-likelihood ratio. Above 10.8 one such test decides between the closest "
      << "pair at the 0.001 level; below 1 it cannot tell them apart.\n\n";
   if (shown(plan) > 0) {
-    md << "The table drive of " << (shown(plan) == 1 ? "the best" : "each of the best") << " (model scale, SI; a "
-       << "sine's noise-free, a record's the measured channel scaled) is in drive-1.csv"
-       << (shown(plan) == 1 ? "" : " to " + drive_file_name(shown(plan) - 1)) << ".\n\n";
+    const std::size_t n = shown(plan);
+    md << (n == 1 ? "The table drive of the best test" : "The table drives of the best " + std::to_string(n))
+       << " (model scale, SI; a sine's noise-free, a record's the measured channel scaled) "
+       << (n == 1 ? "is in drive-1.csv" : "are in drive-1.csv to " + drive_file_name(n - 1)) << ".\n\n";
   }
   md << "| rank | test | separation | closest pair |";
   for (const PlanCandidate& c : plan.candidates) md << " " << c.name << ": peak rotation (rad), max sliding (mm) |";
