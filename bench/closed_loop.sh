@@ -10,6 +10,10 @@
 #
 #   bench/closed_loop.sh BUILD_DIR OUT_CSV [SEEDS] [FIRST_SEED] [EFFECTS]
 #
+# The added test trains in the second diagnosis; with ADDED=heldout it is held out instead, so that
+# the second diagnosis fits the same training tests as the first and judges every candidate on its
+# prediction of the test the plan chose (as the first one's fits were made before it was run).
+#
 # Both diagnoses use curvature errors and skip the search for a second effect (it does not change
 # the cause); the second skips the plan. Where the first leaves only the baseline standing there
 # is no test to propose, and the answer after is the answer before. KEEP=DIR copies each set's
@@ -47,6 +51,10 @@ loop_set() {
   middle=$(date +%s)
   if [ -f "$dir/before/drive-1.csv" ]; then
     add_test "$dir" "$effect" "$seed" "$dir/before/drive-1.csv"
+    if [ "${ADDED:-training}" = heldout ]; then  # judge the fits on the added test's prediction: the same training tests
+      added=$(ls "$dir" | sed -n 's/^\(test[0-9]*\)\.csv$/\1/p' | sort -V | tail -n 1)
+      sed -i "s/^heldout = \[\(.*\)\]$/heldout = [\1, \"$added\"]/" "$dir/specimen.toml"
+    fi
     "$caskdem" diagnose "$dir" --out "$dir/after" --quiet --no-plot --uncertainty curvature --no-second-effect \
       --no-plan >/dev/null
   fi
