@@ -3,8 +3,10 @@
 // apart are separated beyond the adequacy bound by a test strong enough to slide the cask under
 // one of them and not the other (the onset of sliding is mu g, rigid-plastic theory); every
 // proposed sine respects the table's stated limits, and its drive file is its table motion
-// without the noise; and a [table] that cannot be used is one
-// clear error naming the file and key.
+// without the noise, read back at its step whether or not that is whole milliseconds; a [table]
+// that cannot be used is one clear error naming the file and key. A drive run on the hidden
+// specimen gives that specimen's own test back; a bad drive, or a set that is not the one the
+// drive is added to, is one clear error naming the file and line.
 
 #include <cmath>
 #include <cstdio>
