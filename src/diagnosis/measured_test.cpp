@@ -90,8 +90,6 @@ constexpr std::array<ChannelSpec, kChannelCount> kChannels{{
 constexpr double kLargestPlausibleSlide = 1.0;     // m
 constexpr double kLargestPlausibleRotation = 1.0;  // rad
 
-// A smaller sampling step is not a shaking-table record (t in other units, or a corrupt column).
-constexpr double kSmallestSamplingStep = 1e-6;
 
 using Series = std::vector<double>;  // NaN where a sample is missing
 using Mask = std::vector<std::uint8_t>;

@@ -55,6 +55,10 @@ inline bool any_valid(const std::vector<std::uint8_t>& valid) {
 // Longest gap (s) in the table acceleration that is bridged by interpolation.
 inline constexpr double kLongestBridgedInputGap = 0.05;
 
+// A smaller sampling step is not a shaking-table record (t in other units, or a corrupt column);
+// a table drive's step is held to it too.
+inline constexpr double kSmallestSamplingStep = 1e-6;  // s
+
 MeasuredTest read_measured_test(const std::filesystem::path& csv);
 
 }  // namespace caskdem::diagnosis

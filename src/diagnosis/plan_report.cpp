@@ -11,6 +11,7 @@
 #include "caskdem/build_info.h"
 #include "core/error.h"
 #include "core/text.h"
+#include "diagnosis/measured_test.h"
 #include "io/hdf5_file.h"
 #include "io/run_output.h"
 #include "motion/record.h"
@@ -240,9 +241,9 @@ TableDrive read_drive(const std::filesystem::path& file) {
   // The step from the span, which rounding hardly touches; a drive is as fine and as long as a
   // measured test may be.
   drive.time_step = previous / double(drive.acceleration.size() - 1);
-  if (!(drive.time_step >= kSmallestDriveStep) || drive.time_step > motion::kLargestRecordTimeStep)
+  if (!(drive.time_step >= kSmallestSamplingStep) || drive.time_step > motion::kLargestRecordTimeStep)
     fail_at(file, last_line, "the drive's step is " + number_text(drive.time_step) + " s; expected " +
-                                    number_text(kSmallestDriveStep) + " to " + number_text(motion::kLargestRecordTimeStep) +
+                                    number_text(kSmallestSamplingStep) + " to " + number_text(motion::kLargestRecordTimeStep) +
                                     " s (is t in seconds?)");
   if (previous > motion::kLongestRecord)
     fail_at(file, last_line, "the drive lasts " + number_text(previous) + " s; expected at most " +

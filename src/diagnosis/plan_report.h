@@ -36,9 +36,6 @@ struct TableDrive {
   std::vector<double> acceleration;  // m/s^2
 };
 
-// A drive's step: at least a microsecond, as a measured test's (measured_test.cpp).
-inline constexpr double kSmallestDriveStep = 1e-6;  // s
-
 // Throws InputError naming the file and line, and what was expected.
 TableDrive read_drive(const std::filesystem::path& file);
 
