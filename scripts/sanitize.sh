@@ -38,6 +38,27 @@ repeats=$(
   )
   echo "${list[*]}"
 )
+# Under AddressSanitizer, also the studies that run one code many times over to measure a
+# number (a convergence order, a threshold found by bisection, an interval's coverage, the same
+# ensemble's bits on every block size, thread count or instruction set once more): each took 30
+# s to 2 min instrumented on a two-core AMD EPYC, where the suite's shorter tests run the same
+# code once. The ensemble on every instruction set stays in (Reproducibility.SameBitsOnEvery-
+# InstructionSet): it is what runs each instruction set's kernel under the sanitizers.
+studies=$(
+  IFS='|'
+  list=(
+    'Sliding\.WholeStepSliderIsSecondOrder'
+    'Pulses\.HalfSineOverturningThresholdFollowsTheClosedForm'
+    'Convergence\.TheCaskIn3DUnderAStationsThreeComponents'
+    'NestedFragility\.RecoversTheTwoLevelModelAndItsIntervalsCoverTheTruth'
+    'Agreement\.EveryLaneEqualsTheDeterministicRun'
+    'Reproducibility\.(WholeStepSliderSameBitsOnEveryInstructionSetAndThreadCount|SameBitsWhateverTheBlockSize)'
+    'Reproducibility\.SameBitsOnOneTwoAndThreeThreads'
+    'CommandLine\.AnInstructionSetTheMachineLacksIsRefusedFirst'
+    'OutputFormats\.TheDocsPythonRecipeRuns'
+  )
+  echo "${list[*]}"
+)
 
 case "$kind" in
   address)
@@ -75,7 +96,7 @@ if [ "$kind" = address ] && [ $# -eq 0 ]; then
   # tour (label tour; each of its commands has its own test); the 3D ensemble's run on every
   # thread count stays in under ThreadSanitizer alone, where it is the 3D engine's thread test.
   ctest --test-dir "$build" --output-on-failure --no-tests=error -j"$jobs" -LE 'diagnosis-full|tour' \
-    -E "^(Mpi\.|Ensemble3D\.SameBitsOnEveryInstructionSetThreadCountBlockSizeAndSchedule|$repeats)"
+    -E "^(Mpi\.|Ensemble3D\.SameBitsOnEveryInstructionSetThreadCountBlockSizeAndSchedule|$repeats|$studies)"
   # OpenMPI unloads its plugins before the leak check, so what they keep shows with no module
   # name and no suppression can match it: the MPI tests run with every check but that one.
   ASAN_OPTIONS=${ASAN_OPTIONS/detect_leaks=1/detect_leaks=0} \
