@@ -95,7 +95,7 @@ if [ "$kind" = address ] && [ $# -eq 0 ]; then
   # test_decision_invariants.cpp runs the whole diagnosis on a small search) and the README's
   # tour (label tour; each of its commands has its own test); the 3D ensemble's run on every
   # thread count stays in under ThreadSanitizer alone, where it is the 3D engine's thread test.
-  ctest --test-dir "$build" --output-on-failure --no-tests=error -j"$jobs" -LE 'diagnosis-full|tour' \
+  ctest --test-dir "$build" --output-on-failure --no-tests=error -j"$jobs" -LE 'diagnosis-full|diagnosis-more|tour' \
     -E "^(Mpi\.|Ensemble3D\.SameBitsOnEveryInstructionSetThreadCountBlockSizeAndSchedule|$repeats|$studies)"
   # OpenMPI unloads its plugins before the leak check, so what they keep shows with no module
   # name and no suppression can match it: the MPI tests run with every check but that one.

@@ -1,199 +1,32 @@
-// The diagnosis must find an effect hidden in the data. Each test generates synthetic
-// measured data (src/diagnosis/synthesize.h: eight tests of the 1/3 model cask with sensor
-// noise) from a truth with one mechanism switched on at values the diagnosis is not told,
-// runs the workflow on the data alone, and asserts that the cause is the hidden mechanism
-// and that its held-out gain is positive and significant. Data from the baseline model plus
-// noise must give "none"; with one effect hidden no second effect is reported; with two effects
-// hidden, the stronger comes first. Seeds differ
-// from test to test; success rates over more seeds are measured outside CI
-// (bench/diagnosis_success.sh, docs/diagnosis-accuracy.md).
-//
-// Velocity-dependent friction (seed 101) is found since each fit starts one local search per
-// explored basin (fitting.h, basin_radius) and one more from a first fit on the predictable
-// training tests (diagnose.cpp): held-out gain 0.42, BIC -20.4; before, its kinetic ratio and
-// decay speed settled in a basin other than the truth's, with a lower training objective
-// (28.6 against 35.5) and a held-out gain of 0.03.
-//
-// The floor layer (seed 106) is found since a held-out test is judged as a prediction: its
-// tolerances also allow the spread of the fitted model's response over draws of its fitted
-// parameters (src/diagnosis/predictability.cpp, add_fit_spread). Held-out gain 0.207, BIC
-// -118.1; -0.03 before. It is the thinnest margin of these tests (the criterion is 0.2). How:
-// - The search. The baseline mimics the soft layer with a soft, heavily damped contact that does
-//   not slide (friction 1.21; stiffness scale 0.50 and damping ratio 0.19, 0.27 and 0.25 with
-//   the earlier search), and the truth's basin is a few percent wide in every parameter: a
-//   contact 0.9 % stiffer raises the residual-sliding loss of the earthquake test3 from 0 to 6. The four sine tests alone (the tests whose
-//   tolerances predictability widens least, 1.0 to 1.4 in geometric mean against 2.8 and 5.2
-//   for the earthquakes) funnel to the truth from far; but started from the best explored
-//   points their fit also ended in the no-sliding basin (J 28 on the sines against 3.4 at the
-//   truth), as did exploring with 1024 points, starts = 16, and one start per basin at radius
-//   0.25. With one start per basin at radius 0.5 the fit on the sines ends at J 3.5 and the
-//   full fit at J 8.8, below the truth's 17.3 (friction 0.341, damping ratio 0.0396, stiffness
-//   scale 1.198, layer ratio 0.0877 and depth 0.355 mm against 0.309, 0.0422, 1.161, 0.0918 and
-//   0.341 mm).
-// - The held-out test5. That fit predicts every rotation measure of both held-out tests within
-//   its tolerance, but judged at its point alone test5's residual sliding is off by 7.1
-//   tolerances: test5 slides only when friction is below about 0.32, and the training tests do
-//   not pin friction that closely (their J is 9.5, 8.5 and 8.7 at friction 0.32, 0.33 and 0.34,
-//   test5's loss 1.6, 15 and 34). The fit's own standard error of friction (the curvature's) is
-//   0.0075, so some of the 16 draws of its parameters slide on test5; with that spread the
-//   miss is 4.2 tolerances and the layer's held-out error 1.03 against the baseline's 1.30
-//   (1.38 against 1.34 judged at the points alone: gain -0.03). Over the 180 success-rate data
-//   sets it turned two other misses into hits and no answer wrong (docs/diagnosis-accuracy.md,
-//   "Held-out tests judged as predictions").
-//   Tried before and not adopted, each costing velocity-dependent friction on the success-rate
-//   seeds: a held-out error that grows only logarithmically beyond a tolerance,
-//   sqrt(mean ln(1 + r^2)), gives 0.31 and names the layer,
-//   but on the success-rate seeds it costs velocity-dependent friction more than it gains
-//   (seed 1008: 0.23 with the present error, 0.10 with the log score; over seeds 1001 to 1009
-//   the friction was named in 2 of 9 with it, 4 of 9 before either change; rows in
-//   bench/results/diagnosis-success-logscore-trial.csv), so it was not adopted. Nor was
-//   judging each held-out test by the fit's predictive distribution (its loss averaged as a
-//   likelihood over the fitted point and 32 draws from the fit's Laplace posterior): it names
-//   the layer (gain 0.54) and all ten tests here pass with it, but over seeds 1001 to 1008
-//   the friction was named in 3 of 8 against 4, and once a wrong cause was named (rows in
-//   bench/results/diagnosis-success-predictive-trial.csv; docs/diagnosis-accuracy.md, "How often it was right judged at the fitted point").
-//   Four table inputs per test, other held-out pairs, and the held-out error pooled over four
-//   folds did not find it either (measured before the search changes).
-// - Why the truth scores worse than that fit (J 17.3 against 8.8): 13.2 of it is the earthquake
-//   test3's rocking duration and rate (-3.2 and -2.2 tolerances), and the cause is the table
-//   channel's noise, 0.3 mg. With the response channels' noise off test3 still loses 12 at the
-//   truth; with the table's off too, every residual there is the CSV files' rounding
-//   (`caskdem synthesize-measured --rotation-noise 0 --slide-noise 0 --table-noise 0`). The
-//   rocking duration runs from the first to the last excursion beyond 1 % of alpha, and test3's
-//   last one is a small late rock near that threshold, there or not as the noise falls.
-//   Measured as a significant duration instead (5 % to 95 % of the sum of theta^2, as
-//   Trifunac & Brady 1975 measure a record's duration), test3 loses 0.34 at the truth and the
-//   truth's J is 4.2 against 14.1 at that fit. It was not adopted: the fit then did not reach
-//   the truth's basin (the first fit on the sines stopped in a small local minimum at friction
-//   0.38, J 8.6 against 3.5 at the truth, and the full fit ended at 0.60, J 56.6), and the
-//   velocity-dependent friction of seed 101 was no longer found (held-out gain -1.45).
-//   At the truth test3's rocking tail is chaotic, not merely near a threshold: over 15 copies
-//   of the measured table channel with fresh noise added its duration runs from 3.1 to 6.8 s
-//   (measured 5.2 s; the measured channel itself gives 3.3 s), and a 40 Hz low-pass of the
-//   noise-free channel moves it from 5.1 to 2.7 s. The tolerances' predictability is
-//   estimated at the nominal point, where that spread came out at 0.55 s from 8 noisy inputs;
-//   from 32 it left the truth's J at 16.0 against the fit's 10.2, so neither more realisations
-//   nor a threshold band (the measured duration moves by only 0.24 s within a quarter of the
-//   threshold either side) removes the miss.
-//   Nor does a truer noise level for the table inputs: over the whole record the second
-//   differences of an earthquake test are mostly signal (0.032 to 0.053 m/s^2 against the
-//   sensor's 0.003); taken over each record's quietest second, the floor layer's fit still ends
-//   at the baseline here, and friction seed 101 is missed (gain 0.22, BIC +6.4). The truth
-//   itself passes every criterion (bench/truth_detectability.sh: gain 0.74, BIC -88.0), so
-//   the miss is the objective's and not the data's.
-// Each objective above can be checked with `caskdem evaluate-measured` on the data set that
-// `caskdem synthesize-measured --effect NAME --seed N` writes, at the values in its truth.json.
+// The diagnosis's answer on whole data sets at the shipped search settings (ctest label
+// diagnosis-full, in the gate): data from the baseline model plus noise give "none", whatever
+// normal law is compared; with one effect hidden it is named and no second effect is reported;
+// and on data its own model did not make (the independent generator), the null, a wrong
+// footprint rule, a hidden convex base and the profiles. Every other mechanism named where it is
+// hidden, Hunt-Crossley data, and two effects hidden are test_every_mechanism.cpp (label
+// diagnosis-more, left out of the gate for its time). Seeds differ from test to test; success
+// rates over more seeds are measured outside CI (bench/diagnosis_success.sh,
+// docs/diagnosis-accuracy.md).
 
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
-#include <ostream>
 #include <string>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "diagnosis/diagnose.h"
-#include "diagnosis/report.h"
-#include "diagnosis/synthesize.h"
 #include "measured_set.h"  // tests/independent
 #include "support/temporary_files.h"
+#include "synthetic_diagnosis.h"
 
 namespace caskdem::diagnosis {
 namespace {
 
-// With `report`, diagnosis.json and report.md are written there too (no plots).
-Diagnosis diagnose_synthetic(const std::vector<Mechanism>& hidden, std::uint64_t seed, bool second_effect,
-                             const std::string& stated_rule = "gyration",
-                             const std::filesystem::path& report = {},
-                             NormalLaw data_law = NormalLaw::linear, bool compare_normal_laws = false) {
-  const testing::TestDirectory directory;
-  SyntheticSpec spec;
-  spec.hidden = hidden;
-  spec.seed = seed;
-  spec.normal_law = data_law;
-  write_synthetic_measured_set(directory.path(), spec);
-  if (stated_rule != "gyration") {  // the data's own rule; the specimen file states another
-    const std::filesystem::path file = directory.path() / "specimen.toml";
-    std::ifstream in(file);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::string from = "half_width = \"gyration\"";
-    text.replace(text.find(from), from.size(), "half_width = \"" + stated_rule + "\"");
-    std::ofstream(file) << text;
-  }
-  const MeasuredSet set = read_measured_set(directory.path());
-  DiagnosisOptions options;
-  options.threads = 2;
-  options.look_for_second_effect = second_effect;
-  options.compare_normal_laws = compare_normal_laws;
-  Diagnosis d = diagnose(set, options);
-  if (!report.empty()) write_diagnosis(report, set, d, options.isa, false);
-  return d;
-}
-
-const CandidateScore& score_of(const Diagnosis& d, Mechanism m) {
-  for (const CandidateScore& c : d.ranking) {
-    if (c.mechanism == m) return c;
-  }
-  throw std::logic_error("not ranked");
-}
-
-struct HiddenCase {
-  Mechanism mechanism;
-  std::uint64_t seed;
-};
-
-// How ctest and gtest name a case (else they print its bytes).
-void PrintTo(const HiddenCase& c, std::ostream* os) { *os << mechanism_name(c.mechanism) << ", seed " << c.seed; }
-
-class HiddenEffect : public ::testing::TestWithParam<HiddenCase> {};
-
-TEST_P(HiddenEffect, IsNamedAsTheCause) {
-  const HiddenCase c = GetParam();
-  const Diagnosis d = diagnose_synthetic({c.mechanism}, c.seed, false);
-  const CandidateScore& found = score_of(d, c.mechanism);
-  RecordProperty("cause", d.cause);
-  RecordProperty("heldout_gain", std::to_string(found.heldout_gain));
-  RecordProperty("bic_delta", std::to_string(found.bic_delta));
-  EXPECT_EQ(d.cause, mechanism_name(c.mechanism));
-  EXPECT_GT(found.heldout_gain, 0.0);
-  EXPECT_TRUE(found.significant) << "held-out gain " << found.heldout_gain << ", BIC delta " << found.bic_delta;
-}
-
-std::string case_name(const ::testing::TestParamInfo<HiddenCase>& info) { return mechanism_name(info.param.mechanism); }
-
-// The vertical excitation (seed 105) is named by OneEffectGivesNoSecondEffect, below, which
-// diagnoses the same set with the second-effect search on (one full diagnosis fewer in the gate).
-INSTANTIATE_TEST_SUITE_P(
-    EveryMechanism, HiddenEffect,
-    ::testing::Values(HiddenCase{Mechanism::velocity_dependent_friction, 101},
-                      HiddenCase{Mechanism::amplitude_dependent_restitution, 102},
-                      HiddenCase{Mechanism::eccentric_mass, 103}, HiddenCase{Mechanism::base_imperfection, 104},
-                      HiddenCase{Mechanism::floor_compliance, 111},
-                      HiddenCase{Mechanism::out_of_plane_loss, 107}, HiddenCase{Mechanism::sensor_delay, 108}),
-    case_name);
-
-// The floor layer of seed 106, the thinnest pass while each model's held-out tests were judged
-// at its own tolerances (gain 0.207 against the 0.2 criterion; above). At common tolerances
-// the baseline is judged with the layer's wider ones on test5 too, and the layer's gain is
-// 0.191, BIC -118: just short of the criterion, so it is not named. The answer must then not
-// be "none": the baseline misfits beyond noise, and the report ranks the layer first.
-TEST(HiddenEffect, AFloorLayerJustShortOfTheCriterionIsUnexplainedNotNone) {
-  const Diagnosis d = diagnose_synthetic({Mechanism::floor_compliance}, 106, false);
-  const CandidateScore& layer = score_of(d, Mechanism::floor_compliance);
-  RecordProperty("cause", d.cause);
-  RecordProperty("heldout_gain", std::to_string(layer.heldout_gain));
-  EXPECT_NE(d.cause, "none");
-  EXPECT_FALSE(d.baseline.adequacy.adequate);
-  EXPECT_EQ(d.ranking.front().mechanism, Mechanism::floor_compliance);
-  EXPECT_GT(layer.heldout_gain, 0.0);
-  EXPECT_LT(layer.bic_delta, -10.0);
-}
-
 // The normal laws are compared too (DiagnosisOptions::compare_normal_laws): data made with the
-// linear law keep it (TheNormalLawTheDataCameFromIsKept, below, has the Hunt-Crossley data).
+// linear law keep it (test_every_mechanism.cpp has the Hunt-Crossley data).
 // Also: a mechanism at its off value is reported with no gain in diagnosis.json (its ratio as
 // fitted kept beside it); on these data most mechanisms end there.
 TEST(HiddenEffect, BaselineDataGiveNone) {
@@ -220,45 +53,14 @@ TEST(HiddenEffect, BaselineDataGiveNone) {
   EXPECT_GT(off, 0) << "no mechanism at its off value: the check above checked nothing";
 }
 
-// The same kind of data with a specimen file that states the wrong two-corner rule: the
-// baseline on it needs a contact stiffness several times off, and the answer must not be
-// "none" (the model is fine) but name the footprint the held-out tests prefer.
-TEST(HiddenEffect, AWrongFootprintRuleIsNamed) {
-  const Diagnosis d = diagnose_synthetic({}, 109, false, "radius");
-  RecordProperty("cause", d.cause);
-  ASSERT_EQ(d.footprints.size(), 3u);
-  for (const FootprintScore& f : d.footprints) {
-    RecordProperty("heldout_error_" + f.footprint, std::to_string(f.heldout_error));
-  }
-  EXPECT_NE(d.cause, "none");
-  EXPECT_EQ(d.cause, "footprint");
-  EXPECT_EQ(d.footprint, "gyration");
-  EXPECT_TRUE(d.footprint_changed);
-}
-
-// The contact's normal law as a model form: data made with the Hunt-Crossley law, the specimen
-// file stating the linear one, are diagnosed on the law they came from when the diagnosis
-// compares the laws (DiagnosisOptions::compare_normal_laws). Data made with the linear law keep
-// it: BaselineDataGiveNone, above, compares the laws on them.
-TEST(HiddenEffect, TheNormalLawTheDataCameFromIsKept) {
-  const Diagnosis hertz = diagnose_synthetic({}, 109, false, "gyration", {}, NormalLaw::hunt_crossley, true);
-  ASSERT_EQ(hertz.footprints.size(), 6u) << "three footprint rules times two laws";
-  for (const FootprintScore& f : hertz.footprints) {
-    RecordProperty("heldout_error_" + form_label(f, true), std::to_string(f.heldout_error));
-  }
-  RecordProperty("cause", hertz.cause);
-  EXPECT_EQ(hertz.normal_law, "hunt-crossley");
-  EXPECT_TRUE(hertz.normal_law_changed);
-  EXPECT_EQ(hertz.footprint, "gyration");
-}
-
 // One effect hidden, so no second one to find. Fitted from the cause's point, the pair with
 // out-of-plane loss found a better region of the cause's own parameters (J 2.9 of the
 // vertical excitation alone against 1.1 refitted from the pairs) and passed for a second
 // effect (held-out gain 0.41); scored against the cause refitted from the pairs' values, no
 // pair is significant. Over 41 right single-cause diagnoses (bench/results/
 // second-effect-refit.csv) false second effects fell from 15 to 3.
-// The hidden vertical excitation is also named as the cause, as every mechanism is above.
+// The hidden vertical excitation is also named as the cause, as every other mechanism is in
+// test_every_mechanism.cpp.
 TEST(HiddenEffect, OneEffectGivesNoSecondEffect) {
   const Diagnosis d = diagnose_synthetic({Mechanism::vertical_excitation}, 105, true);
   const CandidateScore& found = score_of(d, Mechanism::vertical_excitation);
@@ -387,19 +189,6 @@ TEST(IndependentData, TheProfileFindsAMechanismWhereItsTruthLowersTheMisfit) {
   }
   RecordProperty("effects_checked", checked);
   EXPECT_GE(checked, 2) << "too few effects whose truth lowers the misfit: the check checked little";
-}
-
-TEST(HiddenEffect, TwoEffectsStrongerFirst) {
-  // A convex base changes every rocking test from its first cycle; an impact damper changes
-  // only the losses at impacts: the first is the stronger.
-  const Diagnosis d =
-      diagnose_synthetic({Mechanism::base_imperfection, Mechanism::amplitude_dependent_restitution}, 110, true);
-  RecordProperty("cause", d.cause);
-  RecordProperty("second", d.second_cause);
-  EXPECT_EQ(d.cause, "base_imperfection");
-  const CandidateScore& first = score_of(d, Mechanism::base_imperfection);
-  const CandidateScore& weaker = score_of(d, Mechanism::amplitude_dependent_restitution);
-  EXPECT_GT(first.heldout_gain, weaker.heldout_gain);
 }
 
 }  // namespace
