@@ -40,9 +40,10 @@ repeats=$(
 )
 # Under AddressSanitizer, also the studies that run one code many times over to measure a
 # number (a convergence order, a threshold found by bisection, an interval's coverage, the same
-# ensemble's bits on every block size, thread count or instruction set once more): each took 30
-# s to 2 min instrumented on a two-core AMD EPYC, where the suite's shorter tests run the same
-# code once. The ensemble on every instruction set stays in (Reproducibility.SameBitsOnEvery-
+# ensemble's bits on every block size, thread count or instruction set once more), and the docs'
+# Python recipe, whose instrumented part is an ensemble run other tests make: each took 30 s to
+# 2 min instrumented on a two-core AMD EPYC, where the suite's shorter tests run the same code
+# once. The ensemble on every instruction set stays in (Reproducibility.SameBitsOnEvery-
 # InstructionSet): it is what runs each instruction set's kernel under the sanitizers.
 studies=$(
   IFS='|'

@@ -19,9 +19,9 @@ namespace caskdem::diagnosis {
 
 // With `report`, diagnosis.json and report.md are written there too (no plots).
 inline Diagnosis diagnose_synthetic(const std::vector<Mechanism>& hidden, std::uint64_t seed, bool second_effect,
-                             const std::string& stated_rule = "gyration",
-                             const std::filesystem::path& report = {},
-                             NormalLaw data_law = NormalLaw::linear, bool compare_normal_laws = false) {
+                                    const std::string& stated_rule = "gyration",
+                                    const std::filesystem::path& report = {},
+                                    NormalLaw data_law = NormalLaw::linear, bool compare_normal_laws = false) {
   const testing::TestDirectory directory;
   SyntheticSpec spec;
   spec.hidden = hidden;
