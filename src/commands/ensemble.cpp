@@ -14,6 +14,7 @@
 #include "ensemble/device_runner.h"
 #include "ensemble/execute.h"
 #include "ensemble/report_text.h"
+#include "ensemble/results.h"
 #ifdef CASKDEM_WITH_MPI
 #include "ensemble/distributed.h"
 #else
@@ -58,6 +59,7 @@ void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const
   if (options.resume && !std::filesystem::exists(out)) {
     throw InputError(out.string() + ": no such file to resume (run without --resume first)");
   }
+  if (options.resume) check_result_file_seal(out);  // a damaged file refused before the plan's work
   // Where the realisations run: --device, else the file's [run] device, else auto.
   const std::string device_text = options.device.empty() ? spec.device : options.device;
   const std::string device_source =

@@ -262,6 +262,8 @@ EnsembleResults read_ensemble_results(const std::filesystem::path& file, const E
   return results;
 }
 
+void check_result_file_seal(const std::filesystem::path& file) { hdf5::check_seal(file, kResultFile); }
+
 void verify_ensemble_file(const std::filesystem::path& file) {
   EnsembleResults results;
   hdf5::check_seal(file, kResultFile);

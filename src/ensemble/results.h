@@ -72,6 +72,10 @@ void write_ensemble_file(const std::filesystem::path& file, const EnsemblePlan& 
 // seal fails (a file cut short, flipped bits; hdf5::check_seal).
 EnsembleResults read_ensemble_results(const std::filesystem::path& file, const EnsemblePlan& plan, double* wall_seconds);
 
+// For `--resume`, before the plan is made (motions read, spectra computed): an InputError
+// unless the file's seal holds, so that a damaged file is refused at once.
+void check_result_file_seal(const std::filesystem::path& file);
+
 // For `plot`: an InputError unless the file's seal holds and its realisations are whole.
 void verify_ensemble_file(const std::filesystem::path& file);
 
