@@ -7,10 +7,11 @@
 #   scripts/test.sh --full   the full gate, as CI runs it (.ci/run): the suite with the tour and
 #                            the full diagnoses of label diagnosis-full, the suite again under
 #                            AddressSanitizer and UndefinedBehaviorSanitizer, the ensemble tests
-#                            under ThreadSanitizer. About 35 minutes on a two-core Intel Xeon and
-#                            70 on a two-core AMD EPYC; CI gives it 90. The diagnoses of label
-#                            diagnosis-more (ctest -L diagnosis-more, 25 minutes) and the readers
-#                            under libFuzzer (bench/fuzz.sh, docs/fuzzing.md) are run apart.
+#                            under ThreadSanitizer. About 70 minutes on a two-core AMD EPYC, the
+#                            slowest machine CI has run it on (docs/fuzzing.md has the stages); CI
+#                            gives it 90. The diagnoses of label diagnosis-more (ctest -L
+#                            diagnosis-more, about 30 minutes) and the readers under libFuzzer
+#                            (bench/fuzz.sh, docs/fuzzing.md) are run apart.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 full=false
