@@ -14,6 +14,9 @@
 # the second diagnosis fits the same training tests as the first and judges every candidate on its
 # prediction of the test the plan chose (as the first one's fits were made before it was run).
 #
+# With WARM=1 the second diagnosis starts its searches also from the first's fits (diagnose
+# --start-from BEFORE/diagnosis.json), as a laboratory re-diagnosing with the added test would.
+#
 # Both diagnoses use curvature errors and skip the search for a second effect (it does not change
 # the cause); the second skips the plan. Where the first leaves only the baseline standing there
 # is no test to propose, and the answer after is the answer before. KEEP=DIR copies each set's
@@ -55,8 +58,11 @@ loop_set() {
       added=$(ls "$dir" | sed -n 's/^\(test[0-9]*\)\.csv$/\1/p' | sort -V | tail -n 1)
       sed -i "s/^heldout = \[\(.*\)\]$/heldout = [\1, \"$added\"]/" "$dir/specimen.toml"
     fi
+    warm=
+    [ -z "${WARM:-}" ] || warm="--start-from $dir/before/diagnosis.json"
+    # shellcheck disable=SC2086  # $warm is two words or none
     "$caskdem" diagnose "$dir" --out "$dir/after" --quiet --no-plot --uncertainty curvature --no-second-effect \
-      --no-plan >/dev/null
+      --no-plan $warm >/dev/null
   fi
   end=$(date +%s)
   plan="$dir/before/plan.json" after="$dir/after/diagnosis.json"

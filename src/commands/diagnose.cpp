@@ -37,6 +37,14 @@ void add_uncertainty_option(CLI::App* cmd, std::string& uncertainty, const std::
       ->capture_default_str();
 }
 
+// --start-from: an earlier diagnosis of the cask whose fits start this one's (diagnosis/earlier_fits.h).
+void add_start_from_option(CLI::App* cmd, std::string& start_from) {
+  cmd->add_option("--start-from", start_from,
+                  "An earlier diagnosis.json (or calibration.json) of this cask, e.g. before a test was added: each "
+                  "of its fits joins the starts of the fit of the same model and footprint, which then ends no higher "
+                  "than that fit's point on these tests");
+}
+
 void print_adequacy(const diagnosis::Adequacy& a) {
   std::cout << "adequate        " << (a.adequate ? "yes" : "no") << ": J " << std::setprecision(4) << a.statistic
             << " over " << a.residuals << " residuals (RMS " << std::setprecision(3) << a.rms_residual
@@ -82,7 +90,7 @@ void print_fit(const diagnosis::ModelFit& m) {
 void add_diagnose(CLI::App& app) {
   {
     struct Options {
-      std::string directory, out;
+      std::string directory, out, start_from;
       int threads = 0;
       bool quiet = false;
       std::string uncertainty = "jackknife";
@@ -95,26 +103,30 @@ void add_diagnose(CLI::App& app) {
     cmd->add_option("--threads", options->threads, "OpenMP threads")->check(thread_count());
     cmd->add_flag("--quiet", options->quiet, "No progress lines");
     add_uncertainty_option(cmd, options->uncertainty, "");
+    add_start_from_option(cmd, options->start_from);
     cmd->callback([options]() {
       const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
       print_data_issues(set);
       const std::filesystem::path out =
           options->out.empty() ? std::filesystem::path(options->directory) / "calibration" : std::filesystem::path(options->out);
+      diagnosis::DiagnosisOptions run_options = options_for(options->threads, options->quiet, options->uncertainty);
+      if (!options->start_from.empty()) run_options.earlier = diagnosis::read_earlier_fits(options->start_from, set);
       prepare_output_directory(out);
-      const diagnosis::ModelFit fit =
-          diagnosis::calibrate_baseline(set, options_for(options->threads, options->quiet, options->uncertainty));
+      const diagnosis::ModelFit fit = diagnosis::calibrate_baseline(set, run_options);
+      if (!options->start_from.empty())
+        std::cout << "started from    " << options->start_from << " (its fit among the starts)\n";
       std::cout << "baseline fitted on " << set.training.size() << " tests (" << fit.fit.evaluations
                 << " evaluations in " << fit.fit.populations << " lockstep populations)\n";
       print_fit(fit);
       std::cout << "held-out error  " << fit.heldout_error << " (RMS of scaled residuals)\n";
       print_adequacy(fit.adequacy);
-      diagnosis::write_calibration(out, set, fit);
+      diagnosis::write_calibration(out, set, fit, options->start_from);
       std::cout << "wrote           " << (out / "calibration.json").string() << "\n";
     });
   }
   {
     struct Options {
-      std::string directory, out;
+      std::string directory, out, start_from;
       int threads = 0;
       bool quiet = false, no_plot = false, no_second_effect = false, no_plan = false, normal_laws = false;
       std::string uncertainty = "jackknife";
@@ -135,13 +147,15 @@ void add_diagnose(CLI::App& app) {
     cmd->add_flag("--no-second-effect", options->no_second_effect,
                   "Do not fit the other mechanisms on top of the cause (faster; the cause is the same)");
     add_uncertainty_option(cmd, options->uncertainty, ", for the baseline and the cause");
+    add_start_from_option(cmd, options->start_from);
     cmd->callback([options]() {
       const diagnosis::MeasuredSet set = diagnosis::read_measured_set(options->directory);
       print_data_issues(set);
       const std::filesystem::path out =
           options->out.empty() ? std::filesystem::path(options->directory) / "diagnosis" : std::filesystem::path(options->out);
-      prepare_output_directory(out);
       diagnosis::DiagnosisOptions run_options = options_for(options->threads, options->quiet, options->uncertainty);
+      if (!options->start_from.empty()) run_options.earlier = diagnosis::read_earlier_fits(options->start_from, set);
+      prepare_output_directory(out);
       run_options.look_for_second_effect = !options->no_second_effect;
       run_options.compare_normal_laws = options->normal_laws;
       const diagnosis::Diagnosis d = diagnosis::diagnose(set, run_options);
@@ -149,6 +163,7 @@ void add_diagnose(CLI::App& app) {
       if (!options->no_plan)
         plan = diagnosis::plan_tests(set, d.specimen, diagnosis::leading_candidates(d), run_options);
       std::cout << "cause           " << d.cause << "\n";
+      if (!d.started_from.empty()) std::cout << "started from    " << d.started_from << " (its fits among the starts)\n";
       const bool laws = diagnosis::laws_compared(d.footprints);
       for (const diagnosis::FootprintScore& f : d.footprints) {
         std::cout << (laws ? "model form      " : "footprint       ") << std::left << std::setw(laws ? 30 : 12)

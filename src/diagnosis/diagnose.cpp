@@ -43,8 +43,9 @@ void judge_fit(const MeasuredSet& set, const Yardstick& yardstick, const ModelVa
   m.adequacy = adequacy_of(set, yardstick, variant, m, options);
 }
 
-// Fits a model; its searches start from `starts` (the model it extends, mechanism off) and from
-// the specimen's nominal values (mechanism off).
+// Fits a model; its searches start from `starts` (the model it extends, mechanism off), from
+// the specimen's nominal values (mechanism off) and from an earlier diagnosis's fits of the same
+// model (DiagnosisOptions::earlier).
 ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const ModelVariant& variant,
                      std::vector<std::vector<double>> starts, const DiagnosisOptions& options) {
   ModelFit m;
@@ -60,6 +61,9 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
     if (std::find(starts.begin(), starts.end(), start) == starts.end()) starts.push_back(start);
   };
   add_start(variant.reference());
+  if (options.earlier) {
+    for (const std::vector<double>& start : earlier_starts(*options.earlier, set.specimen, variant)) add_start(start);
+  }
   // A first fit on the predictable training tests alone, whose end is one more start: the
   // chaotic tests make the objective a field of narrow basins, while the predictable ones
   // funnel towards the truth from far (measured on a hidden floor layer; tests/diagnosis/
@@ -443,6 +447,7 @@ void profile_candidates(const MeasuredSet& set, const Yardstick& yardstick, Diag
 Diagnosis diagnose(const MeasuredSet& given, const DiagnosisOptions& options) {
   const auto start = std::chrono::steady_clock::now();
   Diagnosis d;
+  if (options.earlier) d.started_from = options.earlier->source.string();
   say(options, "judging how predictable each test is (" + std::to_string(kPredictabilityRealisations) +
                    " simulations per test with fresh input noise)");
   // The model form first: the mechanisms are fitted on the footprint rule and normal law the

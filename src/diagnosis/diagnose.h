@@ -49,6 +49,7 @@
 #include <vector>
 
 #include "diagnosis/adequacy.h"
+#include "diagnosis/earlier_fits.h"
 #include "diagnosis/fitting.h"
 #include "diagnosis/measured_set.h"
 #include "diagnosis/measures.h"
@@ -84,6 +85,9 @@ struct DiagnosisOptions {
   // null and friction sets (seeds 2001 to 2010) it named no effect more and one wrong mechanism
   // more (docs/diagnosis-accuracy.md, "The second round").
   bool refit_from_profile = false;
+  // An earlier diagnosis of this cask (earlier_fits.h): each of its fits joins the starts of the
+  // fit of the same model and form here.
+  std::optional<EarlierFits> earlier;
   std::function<void(const std::string&)> log;  // progress lines (may be empty)
 };
 
@@ -178,6 +182,8 @@ struct Diagnosis {
   // cause's score in `ranking` stays that of its own fit.
   std::optional<ModelFit> cause_refit;
   std::vector<StructureRow> structure;
+  // The earlier diagnosis whose fits joined the starts (DiagnosisOptions::earlier); empty: none.
+  std::string started_from;
   double wall_seconds = 0.0;
 };
 

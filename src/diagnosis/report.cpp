@@ -264,7 +264,8 @@ nlohmann::json settings_json(const DiagnosisSettings& s) {
 
 }  // namespace
 
-void write_calibration(const std::filesystem::path& directory, const MeasuredSet& set, const ModelFit& baseline) {
+void write_calibration(const std::filesystem::path& directory, const MeasuredSet& set, const ModelFit& baseline,
+                       const std::string& started_from) {
   std::filesystem::create_directories(directory);
   nlohmann::json j = fit_json(baseline);
   j["caskdem_version"] = build_info::version;
@@ -272,6 +273,7 @@ void write_calibration(const std::filesystem::path& directory, const MeasuredSet
   for (int t : set.training) j["training_tests"].push_back(set.tests[t].name);
   for (int t : set.heldout) j["heldout_tests"].push_back(set.tests[t].name);
   j["settings"] = settings_json(set.settings);
+  j["started_from"] = started_from.empty() ? nlohmann::json(nullptr) : nlohmann::json(started_from);
   std::ofstream(directory / "calibration.json") << j.dump(2) << "\n";
 }
 
@@ -286,6 +288,8 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   for (int t : set.training) j["tests"]["training"].push_back(set.tests[t].name);
   for (int t : set.heldout) j["tests"]["heldout"].push_back(set.tests[t].name);
   j["settings"] = settings_json(set.settings);
+  // The earlier diagnosis whose fits joined the searches' starts, so that a run can be repeated.
+  j["started_from"] = d.started_from.empty() ? nlohmann::json(nullptr) : nlohmann::json(d.started_from);
   j["data_issues"] = nlohmann::json::array();
   for (const MeasuredTest& t : set.tests) {
     for (const std::string& issue : t.issues) j["data_issues"].push_back(issue);
@@ -368,6 +372,10 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   md << "; held-out tests: ";
   for (int t : set.heldout) md << set.tests[t].name << " ";
   md << "\n\n";
+  if (!d.started_from.empty()) {
+    md << "Each fit's searches also started from the fit of the same model and footprint in `" << d.started_from
+       << "`, an earlier diagnosis of this cask.\n\n";
+  }
   md << "## Data\n\n";
   bool any_issue = false;
   for (const MeasuredTest& t : set.tests) {

@@ -22,7 +22,9 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
 // "yes", "no", or "no (at its off value)": a ranked mechanism's significance in words.
 std::string significance_text(const CandidateScore& candidate);
 
-// The baseline calibration alone (`caskdem calibrate-measured`): calibration.json.
-void write_calibration(const std::filesystem::path& directory, const MeasuredSet& set, const ModelFit& baseline);
+// The baseline calibration alone (`caskdem calibrate-measured`): calibration.json. `started_from`:
+// the earlier result whose fit joined the starts (empty: none).
+void write_calibration(const std::filesystem::path& directory, const MeasuredSet& set, const ModelFit& baseline,
+                       const std::string& started_from = "");
 
 }  // namespace caskdem::diagnosis

@@ -437,6 +437,16 @@ TEST_F(CommandLine, EveryCommandRefusesBadInputWithOneLineAndStatusTwo) {
   }
   EXPECT_EQ(commands, static_cast<int>(cases.size())) << "--help lists every command with a case here";
 
+  // An earlier diagnosis to start from is read before anything is fitted or written.
+  for (const std::string command : {"diagnose", "calibrate-measured"}) {
+    const Outcome earlier = testing::run_shell("timeout 120 " + std::string(CASKDEM_BINARY) + " " + command + " " +
+                                               good.string() + " --start-from " + bad_json.string() + " --out " + out);
+    EXPECT_EQ(earlier.status, 2) << earlier.output;
+    EXPECT_THAT(earlier.output, HasSubstr(bad_json.string() + ": not JSON")) << command;
+    EXPECT_EQ(std::count(earlier.output.begin(), earlier.output.end(), '\n'), 1) << "one line: " << earlier.output;
+    EXPECT_FALSE(std::filesystem::exists(out)) << command << " --start-from: wrote before refusing";
+  }
+
   // A command line that does not parse is one line too (CLI11 added a second).
   const Outcome o = run_caskdem("run");
   EXPECT_EQ(o.status, 2);
