@@ -61,9 +61,6 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
     if (std::find(starts.begin(), starts.end(), start) == starts.end()) starts.push_back(start);
   };
   add_start(variant.reference());
-  if (options.earlier) {
-    for (const std::vector<double>& start : earlier_starts(*options.earlier, set.specimen, variant)) add_start(start);
-  }
   // A first fit on the predictable training tests alone, whose end is one more start: the
   // chaotic tests make the objective a field of narrow basins, while the predictable ones
   // funnel towards the truth from far (measured on a hidden floor layer; tests/diagnosis/
@@ -81,7 +78,10 @@ ModelFit fit_variant(const MeasuredSet& set, const Yardstick& yardstick, const M
     const FitResult first = fit_parameters(m.parameters, starts, predictable_objective, first_options, predictable_residuals);
     add_start(first.best);
   }
-  m.fit = fit_parameters(m.parameters, starts, objective, fit_options, m.training_residual_count);
+  // An earlier diagnosis's fits of this model are searched beside the rest, which stay as they are.
+  const std::vector<std::vector<double>> earlier =
+      options.earlier ? earlier_starts(*options.earlier, set.specimen, variant) : std::vector<std::vector<double>>{};
+  m.fit = fit_parameters(m.parameters, starts, objective, fit_options, m.training_residual_count, earlier);
 
   // The curvature's errors, before any jackknife raises them: what the held-out tests are judged with.
   m.heldout_standard_error = m.fit.standard_error;

@@ -9,9 +9,10 @@
 // the worked example's convex base, refitted with its proposed test, ended with the stiffness
 // scale at its bound and a training J of 161.9 where the truth's is 152.9). Here every fit of
 // the earlier file whose model and form (footprint rule and normal law) match a fit of this
-// diagnosis joins that fit's starts. A start is evaluated in the first population and searched
-// from when it is the best point of its basin, and a fit reports the best point its searches
-// saw, so a fit never ends above the earlier point's J on the present tests.
+// diagnosis is evaluated in that fit's first population and searched from, beside the searches
+// its exploration chooses, which stay as they would be without it (fitting.h, searched_also): the
+// fit ends no higher than the earlier point's J on the present tests, and where the earlier
+// point's search does not end lowest, the fit is the one made without it.
 
 #include <filesystem>
 #include <string>

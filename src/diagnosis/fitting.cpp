@@ -212,9 +212,11 @@ std::vector<int> basin_starts(const std::vector<std::vector<double>>& explored, 
 
 // One round: explore (one population), then local searches from the explored points that
 // basin_starts picks.
+// The last `searched_also` explored points each start one more search, after the chosen ones:
+// the others' choice and ends are what they would be without them.
 SearchResult explore_and_search(const std::vector<Parameter>& space, const std::vector<std::vector<double>>& explored,
                                 const PopulationObjective& objective, const FitOptions& options, int searches,
-                                FitResult& result) {
+                                FitResult& result, int searched_also = 0) {
   const int n = static_cast<int>(space.size());
   std::vector<double> explored_values;
   {
@@ -231,10 +233,11 @@ SearchResult explore_and_search(const std::vector<Parameter>& space, const std::
   // The first point always starts a search (a nested model's search then cannot end worse than
   // the model it extends); then, best first, each point with no better one within the basin
   // radius; then the best points left.
-  std::vector<int> order(explored.size());
+  std::vector<int> order(explored.size() - static_cast<std::size_t>(searched_also));
   std::iota(order.begin(), order.end(), 0);
   std::stable_sort(order.begin() + 1, order.end(), [&](int a, int b) { return explored_values[a] < explored_values[b]; });
-  const std::vector<int> chosen = basin_starts(explored, order, options.basin_radius, searches);
+  std::vector<int> chosen = basin_starts(explored, order, options.basin_radius, searches);
+  for (int k = static_cast<int>(order.size()); k < static_cast<int>(explored.size()); ++k) chosen.push_back(k);
   std::vector<std::vector<double>> starts;
   for (int c : chosen) starts.push_back(explored[c]);
 
@@ -290,7 +293,8 @@ SearchResult explore_and_search(const std::vector<Parameter>& space, const std::
 }  // namespace
 
 FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<std::vector<double>>& references,
-                         const PopulationObjective& objective, const FitOptions& options, int residual_count) {
+                         const PopulationObjective& objective, const FitOptions& options, int residual_count,
+                         const std::vector<std::vector<double>>& searched_also) {
   const int n = static_cast<int>(space.size());
   const int searches = std::max(1, options.starts);
   FitResult result;
@@ -321,7 +325,13 @@ FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<
       explored.push_back(u);
     }
   }
-  SearchResult best = explore_and_search(space, explored, objective, options, searches, result);
+  for (const std::vector<double>& start : searched_also) {
+    std::vector<double> u(n);
+    for (int i = 0; i < n; ++i) u[i] = to_unit(space[i], start[i]);
+    explored.push_back(u);
+  }
+  SearchResult best = explore_and_search(space, explored, objective, options, searches, result,
+                                         static_cast<int>(searched_also.size()));
 
   // Round 2: every parameter moved a little around the best end point.
   if (options.refinement > 0) {

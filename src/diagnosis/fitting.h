@@ -73,8 +73,13 @@ struct FitResult {
 };
 
 // `references`: points every search family starts from (the first is always searched).
+// `searched_also`: points (an earlier fit's) each evaluated in the first population and searched
+// from, beside the searches the exploration chooses, which stay as they would be without them:
+// the fit ends at or below the lowest of these points' J, and where none of their searches ends
+// below every other the first round, and so the fit, is the one without them.
 FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<std::vector<double>>& references,
-                         const PopulationObjective& objective, const FitOptions& options, int residual_count);
+                         const PopulationObjective& objective, const FitOptions& options, int residual_count,
+                         const std::vector<std::vector<double>>& searched_also = {});
 
 // Local searches side by side (BOBYQA), one from each start (physical values), each over the
 // parameters `free` marks while the others keep their start's values: every search's points

@@ -1,6 +1,7 @@
 // An earlier diagnosis as starts (src/diagnosis/earlier_fits.h): which fits of a diagnosis.json
-// are read and where each is used, what a malformed file gets, and the promise the option makes,
-// that a fit started from an earlier point ends no higher than that point's J on the present tests.
+// are read and where each is used, what a malformed file gets, and the promise the option makes:
+// a fit searched also from an earlier point ends no higher than that point's J on the present
+// tests, and is the fit made without it wherever that point's search does not end lowest.
 
 #include <fstream>
 #include <regex>
@@ -168,6 +169,28 @@ TEST(EarlierFits, AFitEndsNoHigherThanTheEarlierPoint) {
   const ModelFit started = calibrate_baseline(set, options);
   RecordProperty("J of the fit started from it", std::to_string(started.fit.objective));
   EXPECT_LE(started.fit.objective, earlier_objective);
+}
+
+// The other half: an earlier point whose search does not end lowest leaves the fit as it is
+// without it, to the bit (the searches the exploration chooses are not displaced by it). The
+// point is the search box's low corner, far from where these tests are fitted.
+TEST(EarlierFits, APoorEarlierPointLeavesTheFitAsItWas) {
+  const testing::TestDirectory directory;
+  const MeasuredSet set = small_set(directory);
+  DiagnosisOptions options;
+  options.threads = 2;
+  const ModelFit alone = calibrate_baseline(set, options);
+  const ModelVariant baseline(set.specimen, {}, set.vertical_measured);
+  std::vector<double> corner;
+  for (const Parameter& p : baseline.parameters()) corner.push_back(p.low);
+  const std::filesystem::path file = directory / "calibration.json";
+  std::ofstream(file) << fit_object("baseline", values_of(baseline, corner)).dump(2);
+  options.earlier = read_earlier_fits(file, set);
+  const ModelFit started = calibrate_baseline(set, options);
+  RecordProperty("J at the corner", std::to_string(evaluate_point(set, {}, corner, {}, options).training_objective));
+  EXPECT_EQ(started.fit.best, alone.fit.best);
+  EXPECT_EQ(started.fit.objective, alone.fit.objective);
+  EXPECT_GT(started.fit.evaluations, alone.fit.evaluations) << "the corner was searched too";
 }
 
 }  // namespace
