@@ -15,7 +15,6 @@
 
 #include <cmath>
 #include <fstream>
-#include <regex>
 #include <string>
 
 #include <gtest/gtest.h>
@@ -25,6 +24,7 @@
 #include "diagnosis/diagnose.h"
 #include "diagnosis/report.h"
 #include "diagnosis/synthesize.h"
+#include "small_search_set.h"
 #include "support/temporary_files.h"
 
 namespace caskdem::diagnosis {
@@ -61,18 +61,8 @@ const CandidateScore* first_significant(const std::vector<CandidateScore>& ranki
 
 TEST(DecisionInvariants, TheAnswerFollowsItsStatedRules) {
   const testing::TestDirectory directory;
-  SyntheticSpec spec;
-  spec.hidden = {Mechanism::eccentric_mass};
-  spec.seed = 21;
-  write_synthetic_measured_set(directory.path(), spec);
-  const std::filesystem::path specimen = directory / "specimen.toml";
-  const std::string text = testing::file_text(specimen);
-  // A few search points, and four times the set's step: the rules hold whatever the fits come out
-  // at (the model refuses a step beyond the damped scheme's stability limit; docs/model.md).
-  const std::regex search("starts = [0-9]+\\nevaluations = [0-9]+"), step("safety_factor = [0-9.]+");
-  ASSERT_TRUE(std::regex_search(text, search) && std::regex_search(text, step)) << text;
-  std::ofstream(specimen) << std::regex_replace(std::regex_replace(text, search, "starts = 1\nevaluations = 10\nexploration = 16"),
-                                                step, "safety_factor = 0.2");
+  // A few search points, and four times the set's step: the rules hold whatever the fits come out at.
+  ASSERT_TRUE(write_small_search_set(directory.path())) << "specimen.toml's [diagnosis] keys changed";
 
   const MeasuredSet set = read_measured_set(directory.path());
   DiagnosisOptions options;

@@ -15,25 +15,17 @@
 #include "diagnosis/fitting.h"
 #include "diagnosis/footprint.h"
 #include "diagnosis/synthesize.h"
+#include "small_search_set.h"
 #include "support/temporary_files.h"
 
 namespace caskdem::diagnosis {
 namespace {
 
-// A synthetic set (eccentric mass hidden) whose search is cut to a few points at four times the
-// set's step, as test_decision_invariants.cpp cuts it: the promise holds at any search size.
+// The set test_decision_invariants.cpp runs on, its search cut to a few points: the promise holds
+// at any search size.
 MeasuredSet small_set(const testing::TestDirectory& directory,
                       const std::string& search_settings = "starts = 1\nevaluations = 10\nexploration = 16") {
-  SyntheticSpec spec;
-  spec.hidden = {Mechanism::eccentric_mass};
-  spec.seed = 21;
-  write_synthetic_measured_set(directory.path(), spec);
-  const std::filesystem::path specimen = directory / "specimen.toml";
-  const std::string text = testing::file_text(specimen);
-  const std::regex search("starts = [0-9]+\\nevaluations = [0-9]+"), step("safety_factor = [0-9.]+");
-  EXPECT_TRUE(std::regex_search(text, search) && std::regex_search(text, step)) << text;
-  std::ofstream(specimen) << std::regex_replace(
-      std::regex_replace(text, search, search_settings), step, "safety_factor = 0.2");
+  EXPECT_TRUE(write_small_search_set(directory.path(), search_settings)) << "specimen.toml's [diagnosis] keys changed";
   return read_measured_set(directory.path());
 }
 
