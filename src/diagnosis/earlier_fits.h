@@ -11,8 +11,8 @@
 // the earlier file whose model and form (footprint rule and normal law) match a fit of this
 // diagnosis is evaluated in that fit's first population and searched from, beside the searches
 // its exploration chooses, which stay as they would be without it (fitting.h, searched_also): the
-// fit ends no higher than the earlier point's J on the present tests, and where the earlier
-// point's search does not end lowest, the fit is the one made without it.
+// fit ends no higher than the earlier point's J on the present tests nor than the fit made
+// without it, and where the earlier point's search does not end lowest it is that fit.
 
 #include <filesystem>
 #include <string>

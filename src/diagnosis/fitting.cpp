@@ -213,10 +213,11 @@ std::vector<int> basin_starts(const std::vector<std::vector<double>>& explored, 
 // One round: explore (one population), then local searches from the explored points that
 // basin_starts picks.
 // The last `searched_also` explored points each start one more search, after the chosen ones:
-// the others' choice and ends are what they would be without them.
+// the others' choice and ends are what they would be without them, and `own_best` (if given)
+// is the best the round would return without them, to the bit.
 SearchResult explore_and_search(const std::vector<Parameter>& space, const std::vector<std::vector<double>>& explored,
                                 const PopulationObjective& objective, const FitOptions& options, int searches,
-                                FitResult& result, int searched_also = 0) {
+                                FitResult& result, int searched_also = 0, SearchResult* own_best = nullptr) {
   const int n = static_cast<int>(space.size());
   std::vector<double> explored_values;
   {
@@ -282,12 +283,20 @@ SearchResult explore_and_search(const std::vector<Parameter>& space, const std::
   for (std::thread& t : threads) t.join();
   if (lockstep.failure()) std::rethrow_exception(lockstep.failure());
   // The best explored point counts too: a search never returns worse than it started, but
-  // an explored point outside the searches' starts may be better than every end.
-  SearchResult best = *std::min_element(ends.begin(), ends.end(),
-                                        [](const SearchResult& a, const SearchResult& b) { return a.value < b.value; });
-  const auto explored_best = std::min_element(explored_values.begin(), explored_values.end()) - explored_values.begin();
-  if (explored_values[explored_best] < best.value) best = {explored[explored_best], explored_values[explored_best]};
-  return best;
+  // an explored point outside the searches' starts may be better than every end. The points
+  // searched also come last in both lists, so the best of the first `own` of each is the round
+  // without them.
+  auto best_of = [&](std::size_t own_ends, std::size_t own_explored) {
+    SearchResult best = *std::min_element(ends.begin(), ends.begin() + static_cast<std::ptrdiff_t>(own_ends),
+                                          [](const SearchResult& a, const SearchResult& b) { return a.value < b.value; });
+    const auto explored_best =
+        std::min_element(explored_values.begin(), explored_values.begin() + static_cast<std::ptrdiff_t>(own_explored)) -
+        explored_values.begin();
+    if (explored_values[explored_best] < best.value) best = {explored[explored_best], explored_values[explored_best]};
+    return best;
+  };
+  if (own_best) *own_best = best_of(ends.size() - static_cast<std::size_t>(searched_also), order.size());
+  return best_of(ends.size(), explored.size());
 }
 
 }  // namespace
@@ -330,22 +339,37 @@ FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<
     for (int i = 0; i < n; ++i) u[i] = to_unit(space[i], start[i]);
     explored.push_back(u);
   }
-  SearchResult best = explore_and_search(space, explored, objective, options, searches, result,
-                                         static_cast<int>(searched_also.size()));
+  SearchResult own;  // the first round without the points searched also
+  const SearchResult first = explore_and_search(space, explored, objective, options, searches, result,
+                                                static_cast<int>(searched_also.size()), &own);
 
-  // Round 2: every parameter moved a little around the best end point.
-  if (options.refinement > 0) {
-    std::vector<std::vector<double>> around = {best.unit};
+  // Round 2: every parameter moved a little around a first-round best, and searched again.
+  auto refine = [&](const SearchResult& from) {
+    std::vector<std::vector<double>> around = {from.unit};
     const Sampler nearby(SamplingMethod::latin_hypercube, options.seed + 2, 1, options.refinement, n);
     std::vector<double> u(n);
     for (int s = 0; s < options.refinement; ++s) {
       for (int i = 0; i < n; ++i) {
-        u[i] = std::clamp(best.unit[i] + 0.5 * options.local_spread * (2.0 * nearby.uniform(0, s, i) - 1.0), 0.0, 1.0);
+        u[i] = std::clamp(from.unit[i] + 0.5 * options.local_spread * (2.0 * nearby.uniform(0, s, i) - 1.0), 0.0, 1.0);
       }
       around.push_back(u);
     }
-    const SearchResult again = explore_and_search(space, around, objective, options, std::max(1, searches / 2), result);
+    return explore_and_search(space, around, objective, options, std::max(1, searches / 2), result);
+  };
+  // Around the fit's own first-round best first, as without the points searched also, so that
+  // the fit ends no higher than it would without them; then, where one of their searches ended
+  // lowest, around that end too, so that it ends no higher than they do either.
+  SearchResult best = own;
+  if (options.refinement > 0) {
+    const SearchResult again = refine(own);
     if (again.value < best.value) best = again;
+  }
+  if (first.unit != own.unit) {
+    if (first.value < best.value) best = first;
+    if (options.refinement > 0) {
+      const SearchResult again = refine(first);
+      if (again.value < best.value) best = again;
+    }
   }
 
   result.best.resize(n);

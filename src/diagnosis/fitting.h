@@ -74,9 +74,11 @@ struct FitResult {
 
 // `references`: points every search family starts from (the first is always searched).
 // `searched_also`: points (an earlier fit's) each evaluated in the first population and searched
-// from, beside the searches the exploration chooses, which stay as they would be without them:
-// the fit ends at or below the lowest of these points' J, and where none of their searches ends
-// below every other the first round, and so the fit, is the one without them.
+// from, beside the searches the exploration chooses, which stay as they would be without them.
+// The second round runs around the first round's best without them, as it would without them,
+// and, where one of their searches ended lowest, around that end too. So the fit ends at or
+// below both the lowest of these points' J and the fit without them, and where none of their
+// searches ends below every other in the first round it is the fit without them, to the bit.
 FitResult fit_parameters(const std::vector<Parameter>& space, const std::vector<std::vector<double>>& references,
                          const PopulationObjective& objective, const FitOptions& options, int residual_count,
                          const std::vector<std::vector<double>>& searched_also = {});

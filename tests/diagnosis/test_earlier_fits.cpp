@@ -1,7 +1,8 @@
 // An earlier diagnosis as starts (src/diagnosis/earlier_fits.h): which fits of a diagnosis.json
 // are read and where each is used, what a malformed file gets, and the promise the option makes:
 // a fit searched also from an earlier point ends no higher than that point's J on the present
-// tests, and is the fit made without it wherever that point's search does not end lowest.
+// tests, and is the fit made without it wherever that point's search does not end lowest (that it
+// never ends above the fit made without it is tested on a known objective, test_fitting.cpp).
 
 #include <fstream>
 #include <regex>

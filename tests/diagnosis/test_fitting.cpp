@@ -1,8 +1,9 @@
 // The lockstep fitter on objectives with known answers: it finds the minimum of a quadratic
 // bowl, evaluates its searches as populations (several points per call), its standard errors
 // equal the bowl's widths, on linear and logarithmic parameters alike, its starts reach a
-// narrow well beside a broad bowl, and its jackknife over clusters gives the standard error of
-// a mean exactly.
+// narrow well beside a broad bowl, an earlier fit's point searched also never leaves it above the
+// fit without that point, and its jackknife over clusters gives the standard error of a mean
+// exactly.
 
 #include <cmath>
 #include <mutex>
@@ -108,6 +109,51 @@ TEST(Fitting, StartsSpreadOverTheBasinsExplored) {
   EXPECT_NEAR(spread.best[1], 1.0698, 2e-3);
   EXPECT_NEAR(spread.objective, -1.4399, 1e-4);
   EXPECT_TRUE(spread.standard_error.empty());  // none asked for
+}
+
+// An earlier fit's point searched also (`searched_also`, caskdem diagnose --start-from) ends the
+// fit at or below both that point's J and the fit without it. A cone at a = (-1, -1) with its
+// minimum 0 (no quadratic model fits it, so short searches stop short of the bottom), beside a
+// well, another cone, at b = (1.5, 1.5) with its minimum J_b between what the bowl's search
+// reaches in the first round and after the second: with searches this short the first round
+// stops above the bowl's bottom, and the second round, around its end, goes lower. The earlier
+// point, the well's bottom, ends the first round lowest; a second round only around it would
+// leave the fit at J_b, above the fit without it.
+TEST(Fitting, AnEarlierPointNeverLeavesTheFitAboveTheFitWithoutIt) {
+  const std::vector<Parameter> space = {{"a", "", -2.0, 2.0, false, -1.5}, {"b", "", -2.0, 2.0, false, -1.5}};
+  double well_bottom = 0.0;
+  const PopulationObjective bowl_and_well = [&](const std::vector<std::vector<double>>& population) {
+    std::vector<double> values;
+    for (const auto& x : population) {
+      const double to_a = (x[0] + 1.0) * (x[0] + 1.0) + (x[1] + 1.0) * (x[1] + 1.0);
+      const double to_b = (x[0] - 1.5) * (x[0] - 1.5) + (x[1] - 1.5) * (x[1] - 1.5);
+      values.push_back(std::min(std::sqrt(to_a), well_bottom + std::sqrt(to_b)));
+    }
+    return values;
+  };
+  FitOptions options;
+  options.starts = 1;
+  options.exploration = 16;
+  options.evaluations = 8;
+  options.standard_errors = false;
+  well_bottom = 1e9;  // no well: the bowl alone
+  options.refinement = 0;
+  const FitResult first_round = fit_parameters(space, {{-1.5, -1.5}}, bowl_and_well, options, 10);
+  options.refinement = 96;
+  const FitResult cold = fit_parameters(space, {{-1.5, -1.5}}, bowl_and_well, options, 10);
+  RecordProperty("J after the first round", std::to_string(first_round.objective));
+  RecordProperty("J of the fit", std::to_string(cold.objective));
+  ASSERT_LT(cold.objective, 0.5 * first_round.objective) << "the second round must go lower, or the case is not made";
+  ASSERT_LT(first_round.objective, 1.0) << "the first round must reach the bowl";
+
+  well_bottom = 0.5 * (first_round.objective + cold.objective);
+  const FitResult without = fit_parameters(space, {{-1.5, -1.5}}, bowl_and_well, options, 10);
+  EXPECT_EQ(without.best, cold.best) << "the well lies beyond the bowl's searches";
+  const FitResult started = fit_parameters(space, {{-1.5, -1.5}}, bowl_and_well, options, 10, {{1.5, 1.5}});
+  EXPECT_LE(started.objective, well_bottom);
+  EXPECT_LE(started.objective, without.objective);
+  EXPECT_EQ(started.best, without.best);
+  EXPECT_GT(started.evaluations, without.evaluations) << "the well was searched, and around it";
 }
 
 TEST(Fitting, NoStandardErrorForAValueOnItsSearchBound) {
