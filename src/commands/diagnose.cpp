@@ -42,7 +42,7 @@ void add_start_from_option(CLI::App* cmd, std::string& start_from) {
   cmd->add_option("--start-from", start_from,
                   "An earlier diagnosis.json (or calibration.json) of this cask, e.g. before a test was added: each "
                   "of its fits joins the starts of the fit of the same model and footprint, which then ends no higher "
-                  "than that fit's point on these tests");
+                  "than that fit's point on these tests, nor than without this option");
 }
 
 void print_adequacy(const diagnosis::Adequacy& a) {
