@@ -114,9 +114,9 @@ TEST(Fitting, StartsSpreadOverTheBasinsExplored) {
 // An earlier fit's point searched also (`searched_also`, caskdem diagnose --start-from) ends the
 // fit at or below both that point's J and the fit without it. A cone at a = (-1, -1) with its
 // minimum 0 (no quadratic model fits it, so short searches stop short of the bottom), beside a
-// well, another cone, at b = (1.5, 1.5) with its minimum J_b between what the bowl's search
+// well, another cone, at b = (1.5, 1.5) with its minimum J_b between what the first cone's search
 // reaches in the first round and after the second: with searches this short the first round
-// stops above the bowl's bottom, and the second round, around its end, goes lower. The earlier
+// stops above that cone's bottom, and the second round, around its end, goes lower. The earlier
 // point, the well's bottom, ends the first round lowest; a second round only around it would
 // leave the fit at J_b, above the fit without it.
 TEST(Fitting, AnEarlierPointNeverLeavesTheFitAboveTheFitWithoutIt) {
@@ -136,7 +136,7 @@ TEST(Fitting, AnEarlierPointNeverLeavesTheFitAboveTheFitWithoutIt) {
   options.exploration = 16;
   options.evaluations = 8;
   options.standard_errors = false;
-  well_bottom = 1e9;  // no well: the bowl alone
+  well_bottom = 1e9;  // no well: the first cone alone
   options.refinement = 0;
   const FitResult first_round = fit_parameters(space, {{-1.5, -1.5}}, bowl_and_well, options, 10);
   options.refinement = 96;
