@@ -97,12 +97,18 @@ CASKDEM_HOST_DEVICE inline T normal_force(const Model& model, const T& normal_st
 // d0 = 0) and no impact damper. There normal_force reduces to max(K_n d - beta K_n v_n, 0) to
 // the bit (s min(d, 0) is +0 and max(d - 0, 0) is d; beta + 0 d is beta), which
 // linear_normal_force computes with fewer operations: the 3D rim evaluates the law at 16 nodes a step.
+// linear_floor_lanes says it lane by lane (the 3D rim's closed form, kernels/rim_forces.h).
+template <class T>
+CASKDEM_HOST_DEVICE inline auto linear_floor_lanes(const Model& model, const LaneParameters<T>& lane_parameters) {
+  const T zero = lane::broadcast<T>(0.0);
+  // The law is the model's, for every lane: under another law no lane matches (s > 0 is never -1).
+  return lane_parameters.floor_soft_ratio == lane::broadcast<T>(model.normal_law == NormalLaw::linear ? 1.0 : -1.0) &&
+         lane_parameters.floor_soft_depth == zero && lane_parameters.impact_damping == zero;
+}
+
 template <class T>
 CASKDEM_HOST_DEVICE inline bool linear_floor(const Model& model, const LaneParameters<T>& lane_parameters) {
-  const T zero = lane::broadcast<T>(0.0);
-  return model.normal_law == NormalLaw::linear &&
-         lane::all(lane_parameters.floor_soft_ratio == lane::broadcast<T>(1.0) &&
-                   lane_parameters.floor_soft_depth == zero && lane_parameters.impact_damping == zero);
+  return lane::all(linear_floor_lanes(model, lane_parameters));
 }
 
 template <class T>

@@ -29,6 +29,12 @@ struct Contacts3D {
   // Gauss-Legendre rule of 2 kRimNodePairs nodes on [-1, 1]: the positive abscissae, weights.
   double node_abscissa[kRimNodePairs] = {};
   double node_weight[kRimNodePairs] = {};
+  // The rule's sums over its pairs on the whole ring (U = 1), of each node's share s of K_ring:
+  // sum s, sum s cos psi, sum s cos^2 psi, sum s sin^2 psi (kernels/rim_forces.h).
+  double whole_ring_share = 0.0;
+  double whole_ring_share_cos = 0.0;
+  double whole_ring_share_cos2 = 0.0;
+  double whole_ring_share_sin2 = 0.0;
   double ring_radius = 0.0;            // R_c, m: the sphere centres' circle
   double ring_normal_stiffness = 0.0;  // K_ring, N/m, the whole ring
   double ring_shear_stiffness = 0.0;   // N/m

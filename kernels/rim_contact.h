@@ -25,7 +25,9 @@
 // rocking stiffness to 1e-7. The no-tension clip of spring and dashpot together, and the soft
 // floor layer, put kinks inside the arc, where the rule converges only algebraically. Each node pushes with the 2D contact law's normal force at its share of
 // the ring's stiffness. Nodes come in mirror pairs psi, -psi, summed one after the other, so
-// that a cask shaken in its plane from a symmetric start stays in it exactly.
+// that a cask shaken in its plane from a symmetric start stays in it exactly. Where the whole
+// ring is pressed and every node pushes under the linear law, the sums are linear in the
+// nodes' positions and the step takes them in closed form (kernels/rim_forces.h).
 //
 // Friction. The nodes' normal forces act together at the arc's centre of pressure, and the
 // rim's friction is one spring-slider there (kernels/step3d.h), slipping with the material

@@ -37,6 +37,7 @@
 #include "kernels/model3d.h"
 #include "kernels/rigid_rotation.h"
 #include "kernels/rim_contact.h"
+#include "kernels/rim_forces.h"
 #include "kernels/slider.h"
 
 namespace caskdem::kernels {
@@ -214,33 +215,14 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   const T c0 = rim.arc.towards_cos, s0 = rim.arc.towards_sin;
   const T velocity_along = ring * (velocity_per_x * c0 + velocity_per_z * s0);   // P
   const T velocity_across = ring * (velocity_per_z * c0 - velocity_per_x * s0);  // Q
-  const T ring_normal_stiffness = broadcast<T>(contacts.ring_normal_stiffness) * p.stiffness_scale;
-  const T ring_shear_stiffness = broadcast<T>(contacts.ring_shear_stiffness) * p.stiffness_scale;
-  T rim_normal = zero, rim_shear_stiffness = zero, normal_along = zero, normal_across = zero;
-  RimPair<T> pairs[kRimNodePairs];
-  rim_pairs(contacts, rim.arc, pairs);
-  auto each_pair = [&](auto&& law) {
-    for (const RimPair<T>& pair : pairs) {
-      const T gap = rim.centre_gap - rim.amplitude * pair.cos_psi;
-      const T mean_velocity = ring_velocity + velocity_along * pair.cos_psi;
-      const T turn_velocity = velocity_across * pair.sin_psi;
-      const T normal_stiffness = ring_normal_stiffness * pair.share;
-      const T ahead = law(normal_stiffness, gap, mean_velocity + turn_velocity);
-      const T behind = law(normal_stiffness, gap, mean_velocity - turn_velocity);
-      const T both = ahead + behind;
-      rim_normal = rim_normal + both;
-      normal_along = normal_along + both * pair.cos_psi;
-      normal_across = normal_across + (ahead - behind) * pair.sin_psi;
-      const T shear_stiffness = ring_shear_stiffness * pair.share;
-      rim_shear_stiffness = rim_shear_stiffness + select(gap < zero, shear_stiffness + shear_stiffness, zero);
-    }
-  };
-  // The same bits either way (kernels/contact_law.h, linear_floor).
-  if (linear_floor(model, p)) {
-    each_pair([&](const T& k, const T& gap, const T& v) { return linear_normal_force(k, p.damping_beta, gap, v); });
-  } else {
-    each_pair([&](const T& k, const T& gap, const T& v) { return normal_force(model, k, p, gap, v); });
-  }
+  // The nodes' sums, in closed form where the rim is pressed all round (kernels/rim_forces.h).
+  const RimSums<T> pushed =
+      rim_sums(model, contacts, p, RimMotion<T>{rim.centre_gap, rim.amplitude, rim.arc, ring_velocity, velocity_along,
+                                                velocity_across});
+  const T& rim_normal = pushed.normal;
+  const T& normal_along = pushed.normal_along;
+  const T& normal_across = pushed.normal_across;
+  const T& rim_shear_stiffness = pushed.shear_stiffness;
   const T normal_x = ring * (c0 * normal_along - s0 * normal_across);  // sum F_n,j x_j
   const T normal_z = ring * (s0 * normal_along + c0 * normal_across);  // sum F_n,j z_j
   const Vector3<T> turned{rotation.r00 * normal_x + rotation.r02 * normal_z,

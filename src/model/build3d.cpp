@@ -91,6 +91,15 @@ Model3D build_model3d(const ModelSpec& spec, const CaskSpec3D& cask, const Reali
     c.node_abscissa[j] = Rule::abscissa()[j];
     c.node_weight[j] = Rule::weights()[j];
   }
+  // The same nodes as the step's on the whole ring, by the step's own rim_pairs.
+  kernels::RimPair<double> whole_ring[kRimNodePairs];
+  kernels::rim_pairs(c, kernels::RimArc<double>{1.0, 0.0, 1.0}, whole_ring);
+  for (const kernels::RimPair<double>& pair : whole_ring) {
+    c.whole_ring_share += pair.share;
+    c.whole_ring_share_cos += pair.share * pair.cos_psi;
+    c.whole_ring_share_cos2 += pair.share * pair.cos_psi * pair.cos_psi;
+    c.whole_ring_share_sin2 += pair.share * pair.sin_psi * pair.sin_psi;
+  }
   c.ring_radius = ring;
   c.ring_normal_stiffness = normal_total * ring_share;
   c.ring_shear_stiffness = shear_total * ring_share;
