@@ -18,7 +18,7 @@
 // and the shear stiffness 2 K_s S0. It holds where the arc is the whole ring (U = 1, the node
 // positions the constants were taken at), every node's gap is negative (g_c + A < 0) and every
 // node pushes: p + b cos psi -+ c sin psi > 0 for every psi, which is p > |(b, c)|. That is a
-// standing cask's state, most of an ensemble's steps below the intensity that rocks it, and
+// standing cask's state (a quarter of the 3D benchmark's lane-steps, docs/cask3d.md), and
 // there the closed form replaces sixteen evaluations of the law with a few operations. It is the
 // node sum rearranged, equal to it to rounding (tests/kernels/test_rim_forces.cpp); a lane
 // takes it by its own state alone, so a realisation's result does not depend on its neighbours
