@@ -66,6 +66,7 @@ BENCHMARK_CAPTURE(end_to_end, best, InstructionSet::automatic, true, kPlanar)->A
 BENCHMARK_CAPTURE(end_to_end, best_lockstep, InstructionSet::automatic, false, kPlanar)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(end_to_end, avx2, InstructionSet::avx2, true, kPlanar)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(end_to_end, best_3d, InstructionSet::automatic, true, k3D)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
+BENCHMARK_CAPTURE(end_to_end, avx2_3d, InstructionSet::avx2, true, k3D)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
 BENCHMARK_CAPTURE(end_to_end, best_lockstep_3d, InstructionSet::automatic, false, k3D)->Arg(2)->Iterations(1)->UseRealTime()->Unit(benchmark::kSecond);
 
 }  // namespace caskdem::bench
