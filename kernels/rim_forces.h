@@ -88,46 +88,66 @@ CASKDEM_HOST_DEVICE inline RimSums<T> rim_sums_by_nodes(const Model& model, cons
   return sums;
 }
 
+// p, b and c of a node's force F_+- = K s (p + b cos psi -+ c sin psi) (above).
+template <class T>
+struct RimForceTerms {
+  T pressing, rocking, twisting;
+};
+
+template <class T>
+CASKDEM_HOST_DEVICE inline RimForceTerms<T> force_terms(const LaneParameters<T>& p, const RimMotion<T>& rim) {
+  return {-(rim.centre_gap + p.damping_beta * rim.ring_velocity), rim.amplitude - p.damping_beta * rim.velocity_along,
+          p.damping_beta * rim.velocity_across};
+}
+
 // The lanes whose rim is pressed all round, with the paper's linear floor (above).
 template <class T>
 CASKDEM_HOST_DEVICE inline auto pressed_all_round(const Model& model, const LaneParameters<T>& p,
-                                                  const RimMotion<T>& rim) {
+                                                  const RimMotion<T>& rim, const RimForceTerms<T>& f) {
   using lane::broadcast;
   const T zero = broadcast<T>(0.0);
-  const T pressing = -(rim.centre_gap + p.damping_beta * rim.ring_velocity);
-  const T rocking = rim.amplitude - p.damping_beta * rim.velocity_along;
-  const T twisting = p.damping_beta * rim.velocity_across;
   return linear_floor_lanes(model, p) && rim.arc.half_width == broadcast<T>(1.0) &&
-         rim.centre_gap + rim.amplitude < zero && pressing > zero &&
-         pressing * pressing > rocking * rocking + twisting * twisting;
+         rim.centre_gap + rim.amplitude < zero && f.pressing > zero &&
+         f.pressing * f.pressing > f.rocking * f.rocking + f.twisting * f.twisting;
+}
+
+template <class T>
+CASKDEM_HOST_DEVICE inline auto pressed_all_round(const Model& model, const LaneParameters<T>& p,
+                                                  const RimMotion<T>& rim) {
+  return pressed_all_round(model, p, rim, force_terms(p, rim));
 }
 
 // The sums in closed form, for the lanes pressed all round (meaningless elsewhere).
 template <class T>
 CASKDEM_HOST_DEVICE inline RimSums<T> rim_sums_pressed_all_round(const Contacts3D& contacts, const LaneParameters<T>& p,
-                                                                 const RimMotion<T>& rim) {
+                                                                 const RimForceTerms<T>& f) {
   using lane::broadcast;
   const T twice_normal = broadcast<T>(2.0 * contacts.ring_normal_stiffness) * p.stiffness_scale;
-  const T pressing = -(rim.centre_gap + p.damping_beta * rim.ring_velocity);
-  const T rocking = rim.amplitude - p.damping_beta * rim.velocity_along;
-  const T twisting = p.damping_beta * rim.velocity_across;
   const T s0 = broadcast<T>(contacts.whole_ring_share), s1 = broadcast<T>(contacts.whole_ring_share_cos);
   const T s2 = broadcast<T>(contacts.whole_ring_share_cos2), s3 = broadcast<T>(contacts.whole_ring_share_sin2);
-  return {twice_normal * (pressing * s0 + rocking * s1), twice_normal * (pressing * s1 + rocking * s2),
-          -(twice_normal * twisting * s3),
+  return {twice_normal * (f.pressing * s0 + f.rocking * s1), twice_normal * (f.pressing * s1 + f.rocking * s2),
+          -(twice_normal * f.twisting * s3),
           broadcast<T>(2.0 * contacts.ring_shear_stiffness * contacts.whole_ring_share) * p.stiffness_scale};
 }
 
+template <class T>
+CASKDEM_HOST_DEVICE inline RimSums<T> rim_sums_pressed_all_round(const Contacts3D& contacts, const LaneParameters<T>& p,
+                                                                 const RimMotion<T>& rim) {
+  return rim_sums_pressed_all_round(contacts, p, force_terms(p, rim));
+}
+
 // The rim's sums for every lane: in closed form where pressed all round, node by node elsewhere;
-// the nodes are visited only when some lane needs them, and each lane takes its own.
+// each lane takes its own, and the branches only skip what no lane of the batch takes.
 template <class T>
 CASKDEM_HOST_DEVICE inline RimSums<T> rim_sums(const Model& model, const Contacts3D& contacts,
                                                const LaneParameters<T>& p, const RimMotion<T>& rim) {
   using lane::select;
-  const auto closed = pressed_all_round(model, p, rim);
-  const RimSums<T> pressed = rim_sums_pressed_all_round(contacts, p, rim);
-  if (lane::all(closed)) return pressed;
+  const RimForceTerms<T> f = force_terms(p, rim);
+  const auto closed = pressed_all_round(model, p, rim, f);
+  if (lane::all(closed)) return rim_sums_pressed_all_round(contacts, p, f);
   const RimSums<T> nodes = rim_sums_by_nodes(model, contacts, p, rim);
+  if (!lane::any(closed)) return nodes;
+  const RimSums<T> pressed = rim_sums_pressed_all_round(contacts, p, f);
   return {select(closed, pressed.normal, nodes.normal), select(closed, pressed.normal_along, nodes.normal_along),
           select(closed, pressed.normal_across, nodes.normal_across),
           select(closed, pressed.shear_stiffness, nodes.shear_stiffness)};
