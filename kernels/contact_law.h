@@ -46,6 +46,21 @@
 // (m u du / (1 + lambda u) = -K_H d^(3/2) dd integrated from touch to separation), so
 // e = u_out / u_in ~ 1 - (2/3) lambda u_in, independent of the stiffness.
 // The soft floor layer multiplies the spring by its bilinear factor under either law.
+//
+// Under the Hertz law the shear spring is Mindlin's (Mindlin 1949, "Compliance of elastic
+// bodies in contact", J. Appl. Mech. 16; the Hertz-Mindlin pair of DEM codes, e.g. Di Renzo &
+// Di Maio 2004, Chem. Eng. Sci. 59): a Hertzian contact's tangential stiffness 8 G* a and its
+// normal tangent stiffness 2 E* a both grow with the contact radius a = sqrt(R d), so their
+// ratio is the same at every overlap. Here the shear stiffness is K_s (3/2) sqrt(d/d_H), which
+// keeps the linear law's K_s / K_n against the normal spring's tangent (3/2) K sqrt(d/d_H).
+// A linear shear spring beside a Hertz normal one is stiff where the normal spring is soft,
+// as a contact closes and opens, and slips there on a rocking impact: on a cylinder's
+// distributed footprint that slip lost a fifth more energy per impact than a base whose
+// friction follows its pressure (docs/model.md, "The normal law as a model form"). The 2D
+// corner stores K_s times the spring's stretch and pushes with the stiffness of the present
+// overlap (the tangential history of DEM codes' Hertz-Mindlin models), so the force falls with
+// the stiffness as the contact opens; the 3D cask's springs keep their rule for a stiffness
+// that changes (kernels/step3d.h, shear_contact: scaled down as it falls).
 
 #include "kernels/friction_law.h"
 #include "kernels/host_device.h"
@@ -122,6 +137,14 @@ CASKDEM_HOST_DEVICE inline T linear_normal_force(const T& normal_stiffness, cons
   return select(touching, lane::max(normal_stiffness * overlap - damping_force, zero), zero);
 }
 
+// Mindlin's factor on the shear spring's stiffness under the Hertz law, (3/2) sqrt(d/d_H)
+// (above); zero out of contact. Only called under that law.
+template <class T>
+CASKDEM_HOST_DEVICE inline T mindlin_factor(const Model& model, const T& gap) {
+  const T overlap = lane::max(-gap, lane::broadcast<T>(0.0));
+  return lane::broadcast<T>(1.5) * lane::sqrt(overlap / lane::broadcast<T>(model.hertz_overlap));
+}
+
 template <FrictionLaw Law, class T>
 CASKDEM_HOST_DEVICE inline CornerContact<T> corner_contact(const Model& model, const LaneParameters<T>& lane_parameters,
                                                            int corner, const T& gap,
@@ -138,8 +161,17 @@ CASKDEM_HOST_DEVICE inline CornerContact<T> corner_contact(const Model& model, c
   const T normal = normal_force(model, normal_stiffness, lane_parameters, gap, velocity.normal_dashpot);
 
   const auto was_slipping = previous.slipping > broadcast<T>(0.5);
-  const T trial = previous.shear_spring - shear_stiffness * velocity.spring.slip_x * broadcast<T>(model.time_step);
-  const T sticking_dashpot = -beta * shear_stiffness * velocity.shear_dashpot_x;
+  // K_s times the spring's stretch: the force itself under the linear law, which the Hertz law
+  // multiplies by Mindlin's factor of the present overlap (the law is the model's: a uniform branch).
+  const bool hertz = model.normal_law == NormalLaw::hunt_crossley;
+  const T stretch = previous.shear_spring - shear_stiffness * velocity.spring.slip_x * broadcast<T>(model.time_step);
+  T trial = stretch, sticking_stiffness = shear_stiffness, mindlin = zero;
+  if (hertz) {
+    mindlin = mindlin_factor(model, gap);
+    trial = stretch * mindlin;
+    sticking_stiffness = shear_stiffness * mindlin;
+  }
+  const T sticking_dashpot = -beta * sticking_stiffness * velocity.shear_dashpot_x;
   const T sticking = trial + sticking_dashpot;
   const T limit =
       friction_limit<Law>(model, lane_parameters, lane::abs(velocity.friction_x), was_slipping, normal,
@@ -150,8 +182,14 @@ CASKDEM_HOST_DEVICE inline CornerContact<T> corner_contact(const Model& model, c
   const T spring = select(slipping, lane::copysign(limit, trial), select(touching, trial, zero));
   const T dashpot = select(touching && !slipping, sticking_dashpot, zero);
   const T shear_force = lane::clamp(spring + dashpot, -limit, limit);
-
-  return {normal, shear_force, {spring, lane::as_number<T>(slipping)}};
+  T kept = spring;
+  if (hertz) {
+    // The spring keeps its stretch (times K_s): the force over Mindlin's factor, positive where
+    // a slipping contact touches.
+    kept = select(slipping, lane::copysign(limit / select(slipping, mindlin, broadcast<T>(1.0)), trial),
+                  select(touching, stretch, zero));
+  }
+  return {normal, shear_force, {kept, lane::as_number<T>(slipping)}};
 }
 
 }  // namespace caskdem::kernels

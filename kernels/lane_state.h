@@ -66,7 +66,7 @@ struct BodyState {
 // The spring-slider state of one corner contact.
 template <class T>
 struct CornerState {
-  T shear_spring;  // elastic shear force carried by the spring, N (incremental law)
+  T shear_spring;  // K_s times the spring's stretch, N: its force under the linear law (kernels/contact_law.h)
   T slipping;      // 1 if the contact slipped in the last step, else 0
 
   template <class F>

@@ -62,6 +62,7 @@ CASKDEM_HOST_DEVICE inline RimSums<T> rim_sums_by_nodes(const Model& model, cons
   const T ring_normal_stiffness = broadcast<T>(contacts.ring_normal_stiffness) * p.stiffness_scale;
   const T ring_shear_stiffness = broadcast<T>(contacts.ring_shear_stiffness) * p.stiffness_scale;
   RimSums<T> sums{zero, zero, zero, zero};
+  const bool hertz = model.normal_law == NormalLaw::hunt_crossley;  // the model's: a uniform branch
   RimPair<T> pairs[kRimNodePairs];
   rim_pairs(contacts, rim.arc, pairs);
   auto each_pair = [&](auto&& law) {
@@ -76,7 +77,9 @@ CASKDEM_HOST_DEVICE inline RimSums<T> rim_sums_by_nodes(const Model& model, cons
       sums.normal = sums.normal + both;
       sums.normal_along = sums.normal_along + both * pair.cos_psi;
       sums.normal_across = sums.normal_across + (ahead - behind) * pair.sin_psi;
-      const T shear_stiffness = ring_shear_stiffness * pair.share;
+      // Under the Hertz law each node's spring is Mindlin's (kernels/contact_law.h, mindlin_factor).
+      const T shear_stiffness = hertz ? ring_shear_stiffness * pair.share * mindlin_factor(model, gap)
+                                      : ring_shear_stiffness * pair.share;
       sums.shear_stiffness = sums.shear_stiffness + select(gap < zero, shear_stiffness + shear_stiffness, zero);
     }
   };
