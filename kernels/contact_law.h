@@ -145,6 +145,15 @@ CASKDEM_HOST_DEVICE inline T mindlin_factor(const Model& model, const T& gap) {
   return lane::broadcast<T>(1.5) * lane::sqrt(overlap / lane::broadcast<T>(model.hertz_overlap));
 }
 
+// A shear spring's stiffness at a gap under the model's law: K_s under the linear law, Mindlin's
+// K_s (3/2) sqrt(d/d_H) under the Hertz law (the 3D rim's nodes and the base centre).
+template <class T>
+CASKDEM_HOST_DEVICE inline T shear_stiffness_at(const Model& model, const T& shear_stiffness, const T& gap) {
+  // The law is the model's, the same for every lane and thread: a uniform branch.
+  if (model.normal_law == NormalLaw::hunt_crossley) return shear_stiffness * mindlin_factor(model, gap);
+  return shear_stiffness;
+}
+
 template <FrictionLaw Law, class T>
 CASKDEM_HOST_DEVICE inline CornerContact<T> corner_contact(const Model& model, const LaneParameters<T>& lane_parameters,
                                                            int corner, const T& gap,

@@ -62,7 +62,6 @@ CASKDEM_HOST_DEVICE inline RimSums<T> rim_sums_by_nodes(const Model& model, cons
   const T ring_normal_stiffness = broadcast<T>(contacts.ring_normal_stiffness) * p.stiffness_scale;
   const T ring_shear_stiffness = broadcast<T>(contacts.ring_shear_stiffness) * p.stiffness_scale;
   RimSums<T> sums{zero, zero, zero, zero};
-  const bool hertz = model.normal_law == NormalLaw::hunt_crossley;  // the model's: a uniform branch
   RimPair<T> pairs[kRimNodePairs];
   rim_pairs(contacts, rim.arc, pairs);
   auto each_pair = [&](auto&& law) {
@@ -77,9 +76,7 @@ CASKDEM_HOST_DEVICE inline RimSums<T> rim_sums_by_nodes(const Model& model, cons
       sums.normal = sums.normal + both;
       sums.normal_along = sums.normal_along + both * pair.cos_psi;
       sums.normal_across = sums.normal_across + (ahead - behind) * pair.sin_psi;
-      // Under the Hertz law each node's spring is Mindlin's (kernels/contact_law.h, mindlin_factor).
-      const T shear_stiffness = hertz ? ring_shear_stiffness * pair.share * mindlin_factor(model, gap)
-                                      : ring_shear_stiffness * pair.share;
+      const T shear_stiffness = shear_stiffness_at(model, ring_shear_stiffness * pair.share, gap);
       sums.shear_stiffness = sums.shear_stiffness + select(gap < zero, shear_stiffness + shear_stiffness, zero);
     }
   };
@@ -114,12 +111,6 @@ CASKDEM_HOST_DEVICE inline auto pressed_all_round(const Model& model, const Lane
          f.pressing * f.pressing > f.rocking * f.rocking + f.twisting * f.twisting;
 }
 
-template <class T>
-CASKDEM_HOST_DEVICE inline auto pressed_all_round(const Model& model, const LaneParameters<T>& p,
-                                                  const RimMotion<T>& rim) {
-  return pressed_all_round(model, p, rim, force_terms(p, rim));
-}
-
 // The sums in closed form, for the lanes pressed all round (meaningless elsewhere).
 template <class T>
 CASKDEM_HOST_DEVICE inline RimSums<T> rim_sums_pressed_all_round(const Contacts3D& contacts, const LaneParameters<T>& p,
@@ -131,12 +122,6 @@ CASKDEM_HOST_DEVICE inline RimSums<T> rim_sums_pressed_all_round(const Contacts3
   return {twice_normal * (f.pressing * s0 + f.rocking * s1), twice_normal * (f.pressing * s1 + f.rocking * s2),
           -(twice_normal * f.twisting * s3),
           broadcast<T>(2.0 * contacts.ring_shear_stiffness * contacts.whole_ring_share) * p.stiffness_scale};
-}
-
-template <class T>
-CASKDEM_HOST_DEVICE inline RimSums<T> rim_sums_pressed_all_round(const Contacts3D& contacts, const LaneParameters<T>& p,
-                                                                 const RimMotion<T>& rim) {
-  return rim_sums_pressed_all_round(contacts, p, force_terms(p, rim));
 }
 
 // The rim's sums for every lane: in closed form where pressed all round, node by node elsewhere;

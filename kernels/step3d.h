@@ -254,11 +254,8 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
     const Vector3<T> lever{arm.x, arm.y - radius, arm.z};
     const SliderVelocities<T> centre_velocity = contact_velocities(lever);
     const T normal_stiffness = broadcast<T>(contacts.centre_normal_stiffness) * p.stiffness_scale;
-    // Under the Hertz law the spring is Mindlin's (kernels/contact_law.h, mindlin_factor).
     const T shear_stiffness =
-        model.normal_law == NormalLaw::hunt_crossley
-            ? broadcast<T>(contacts.centre_shear_stiffness) * p.stiffness_scale * mindlin_factor(model, gap)
-            : broadcast<T>(contacts.centre_shear_stiffness) * p.stiffness_scale;
+        shear_stiffness_at(model, broadcast<T>(contacts.centre_shear_stiffness) * p.stiffness_scale, gap);
     const T normal = normal_force(model, normal_stiffness, p, gap, centre_velocity.normal_dashpot);
     centre_normal = normal;
     centre_slip_x = centre_velocity.spring.slip_x;

@@ -48,6 +48,16 @@ RimMotion<double> motion(double centre_gap, double amplitude, double ring_veloci
   return {centre_gap, amplitude, touching_arc(centre_gap, slope_x, slope_z), ring_velocity, along, across};
 }
 
+// The step's condition and closed form, each from the state's own p, b and c.
+template <class T>
+auto is_pressed(const Model& model, const LaneParameters<T>& p, const RimMotion<T>& rim) {
+  return pressed_all_round(model, p, rim, force_terms(p, rim));
+}
+template <class T>
+RimSums<T> closed_form(const Contacts3D& contacts, const LaneParameters<T>& p, const RimMotion<T>& rim) {
+  return rim_sums_pressed_all_round(contacts, p, force_terms(p, rim));
+}
+
 // A random state around the standing cask's: overlaps up to twice the weight's, tilts and
 // velocities that reach past the edge of the pressed region.
 struct States {
@@ -92,12 +102,12 @@ TEST(RimForces, PressedAllRoundTheClosedFormIsTheNodeSumToRounding) {
   double worst = 0.0;
   for (int i = 0; i < 200000; ++i) {
     const RimMotion<double> m = states.next();
-    if (!pressed_all_round(r.model.model, r.lane, m)) {
+    if (!is_pressed(r.model.model, r.lane, m)) {
       ++rocking;
       continue;
     }
     ++pressed;
-    const RimSums<double> closed = rim_sums_pressed_all_round(c, r.lane, m);
+    const RimSums<double> closed = closed_form(c, r.lane, m);
     const RimSums<double> nodes = rim_sums_by_nodes(r.model.model, c, r.lane, m);
     // The scale of the sums: the ring's spring force at the largest gap.
     const double scale = c.ring_normal_stiffness * r.lane.stiffness_scale * (std::abs(m.centre_gap) + m.amplitude);
@@ -131,7 +141,7 @@ TEST(RimForces, TheClosedFormIsTakenOnlyWhereEveryNodeTouchesAndPushes) {
       }
     }
     all_pushing += every_node_pushes;
-    if (pressed_all_round(r.model.model, r.lane, m)) {
+    if (is_pressed(r.model.model, r.lane, m)) {
       ++pressed;
       ASSERT_TRUE(every_node_pushes) << i;
     }
@@ -141,15 +151,15 @@ TEST(RimForces, TheClosedFormIsTakenOnlyWhereEveryNodeTouchesAndPushes) {
   EXPECT_GT(pressed, 0.95 * all_pushing);
   // Not under another floor, nor rocking on part of the ring.
   const RimMotion<double> standing = motion(-1e-5, 0.0, 0.0, 0.0, 0.0, 0.0);
-  EXPECT_TRUE(pressed_all_round(r.model.model, r.lane, standing));
-  EXPECT_FALSE(pressed_all_round(r.model.model, r.lane, motion(-1e-5, 2e-5, 0.0, 0.0, 0.0, 0.0)));
+  EXPECT_TRUE(is_pressed(r.model.model, r.lane, standing));
+  EXPECT_FALSE(is_pressed(r.model.model, r.lane, motion(-1e-5, 2e-5, 0.0, 0.0, 0.0, 0.0)));
   LaneParameters<double> soft = r.lane;
   soft.floor_soft_ratio = 0.5;
   soft.floor_soft_depth = 1e-6;
-  EXPECT_FALSE(pressed_all_round(r.model.model, soft, standing));
+  EXPECT_FALSE(is_pressed(r.model.model, soft, standing));
   Model hunt_crossley = r.model.model;
   hunt_crossley.normal_law = NormalLaw::hunt_crossley;
-  EXPECT_FALSE(pressed_all_round(hunt_crossley, r.lane, standing));
+  EXPECT_FALSE(is_pressed(hunt_crossley, r.lane, standing));
 }
 
 // A batch of a standing lane and a rocking one: each lane's sums are its scalar sums to the bit,
@@ -170,7 +180,7 @@ TEST(RimForces, EachLaneOfABatchGetsItsOwnBits) {
   int mixed = 0;
   for (int i = 0; i < 20000; ++i) {
     const RimMotion<double> one[2] = {states.next(), states.next()};
-    mixed += pressed_all_round(r.model.model, r.lane, one[0]) != pressed_all_round(r.model.model, r.lane, one[1]);
+    mixed += is_pressed(r.model.model, r.lane, one[0]) != is_pressed(r.model.model, r.lane, one[1]);
     auto pack = [&](auto field) {
       alignas(16) const double values[2] = {field(one[0]), field(one[1])};
       return Batch::load_aligned(values);
