@@ -10,7 +10,7 @@
 #                            under ThreadSanitizer. About 70 minutes on a two-core AMD EPYC, the
 #                            slowest machine CI has run it on (docs/fuzzing.md has the stages); CI
 #                            gives it 90. The diagnoses of label diagnosis-more (ctest -L
-#                            diagnosis-more, about 30 minutes) and the readers under libFuzzer
+#                            diagnosis-more, about 33 minutes) and the readers under libFuzzer
 #                            (bench/fuzz.sh, docs/fuzzing.md) are run apart.
 set -euo pipefail
 cd "$(dirname "$0")/.."

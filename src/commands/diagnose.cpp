@@ -169,7 +169,9 @@ void add_diagnose(CLI::App& app) {
         std::cout << (laws ? "model form      " : "footprint       ") << std::left << std::setw(laws ? 30 : 12)
                   << diagnosis::form_label(f, laws) << " held-out error "
                   << std::setprecision(3) << f.heldout_error << ", gain " << f.heldout_gain
-                  << (f.stated ? " (stated)" : "") << (f.chosen ? " chosen" : "") << "\n";
+                  << (f.stated ? " (stated)" : "") << (f.chosen ? " chosen" : "");
+        if (f.withdrawn) std::cout << " withdrawn after its refit (gain " << f.gain_when_chosen << " when chosen)";
+        std::cout << "\n";
       }
       print_adequacy(d.baseline.adequacy);
       if (!d.second_cause.empty()) std::cout << "second effect   " << d.second_cause << "\n";

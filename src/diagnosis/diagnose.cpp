@@ -9,6 +9,7 @@
 #include <optional>
 #include <utility>
 
+#include "core/text.h"
 #include "diagnosis/footprint.h"
 #include "diagnosis/judging.h"
 #include "diagnosis/model_form.h"
@@ -442,23 +443,12 @@ void profile_candidates(const MeasuredSet& set, const Yardstick& yardstick, Diag
   }
 }
 
-}  // namespace
-
-Diagnosis diagnose(const MeasuredSet& given, const DiagnosisOptions& options) {
-  const auto start = std::chrono::steady_clock::now();
+// Steps 2 to 5 on the model form footprint->chosen (the given set's own where no form was
+// compared).
+Diagnosis diagnose_on_form(const MeasuredSet& given, std::optional<ModelFormChoice>& footprint,
+                           const DiagnosisOptions& options) {
   Diagnosis d;
-  if (options.earlier) d.started_from = options.earlier->source.string();
-  say(options, "judging how predictable each test is (" + std::to_string(kPredictabilityRealisations) +
-                   " simulations per test with fresh input noise)");
-  // The model form first: the mechanisms are fitted on the footprint rule and normal law the
-  // held-out tests prefer.
-  std::optional<ModelFormChoice> footprint;
-  if ((options.choose_footprint && footprint_of(given.specimen)) || options.compare_normal_laws) {
-    footprint = choose_model_form(given, options, [&](const MeasuredSet& s, const Yardstick& y,
-                                                      const std::vector<std::vector<double>>& also_from) {
-      return fit_baseline(s, y, options, also_from);
-    });
-  }
+  d.minimum_gain = options.minimum_gain;
   const MeasuredSet& set = footprint ? footprint->sets[footprint->chosen] : given;
   const Yardstick yardstick = footprint ? footprint->yardsticks[footprint->chosen] : yardstick_of(set, options);
   d.baseline = footprint ? footprint->fits[footprint->chosen] : fit_baseline(set, yardstick, options);
@@ -530,6 +520,42 @@ Diagnosis diagnose(const MeasuredSet& given, const DiagnosisOptions& options) {
   else if (d.footprint_changed) d.cause = "footprint";
   else if (d.normal_law_changed) d.cause = "normal_law";
   else if (!d.baseline.adequacy.adequate) d.cause = "unexplained";
+  return d;
+}
+
+}  // namespace
+
+Diagnosis diagnose(const MeasuredSet& given, const DiagnosisOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  say(options, "judging how predictable each test is (" + std::to_string(kPredictabilityRealisations) +
+                   " simulations per test with fresh input noise)");
+  // The model form first: the mechanisms are fitted on the footprint rule and normal law the
+  // held-out tests prefer.
+  std::optional<ModelFormChoice> footprint;
+  if ((options.choose_footprint && footprint_of(given.specimen)) || options.compare_normal_laws) {
+    footprint = choose_model_form(given, options, [&](const MeasuredSet& s, const Yardstick& y,
+                                                      const std::vector<std::vector<double>>& also_from) {
+      return fit_baseline(s, y, options, also_from);
+    });
+  }
+  Diagnosis d = diagnose_on_form(given, footprint, options);
+  // A form chosen over the stated one must still be preferred once its baseline is refitted
+  // and the forms judged again: the refit narrows its fit's spread and so the common held-out
+  // tolerances, and can turn its gain negative. Else the mechanisms are fitted again on the
+  // stated form, which stays (no second switch, which could cycle).
+  if (footprint && footprint->chosen != footprint->stated &&
+      d.footprints[footprint->chosen].heldout_gain < options.minimum_gain) {
+    const std::size_t withdrawn = footprint->chosen;
+    const double gain_when_chosen = footprint->scores[withdrawn].heldout_gain;
+    say(options, form_label(d.footprints[withdrawn], laws_compared(d.footprints)) + ": held-out gain " +
+                     number_text(d.footprints[withdrawn].heldout_gain) +
+                     " after its refit, below the minimum; fitting again on the stated form");
+    footprint->chosen = footprint->stated;
+    d = diagnose_on_form(given, footprint, options);
+    d.footprints[withdrawn].withdrawn = true;
+    d.footprints[withdrawn].gain_when_chosen = gain_when_chosen;
+  }
+  if (options.earlier) d.started_from = options.earlier->source.string();
   d.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return d;
 }

@@ -6,7 +6,9 @@
 //  1. Calibrate the baseline (friction, damping ratio, stiffness scale) on the training tests,
 //     for a cylinder on each footprint rule (two corners at the gyration half-width or the
 //     radius, or a distributed base; footprint.h), and keep the rule the held-out tests prefer
-//     (by at least minimum_gain; the stated one otherwise). Judge the baseline's adequacy
+//     (by at least minimum_gain; the stated one otherwise), a choice that must still hold once
+//     the chosen baseline is refitted from the mechanisms' fits (step 3), else it is withdrawn
+//     and steps 2 to 5 are made again on the stated rule. Judge the baseline's adequacy
 //     (adequacy.h): does it fit every test within noise, with plausible values?
 //  2. Measure its discrepancy on every test (src/diagnosis/measures.h) and look for structure
 //     in it: residuals against amplitude, sliding speed, impact speed, rotation sign, vertical
@@ -153,6 +155,11 @@ struct FootprintScore {
   std::string normal_law;      // normal_law_name
   bool stated = false;         // the specimen's own rule and law
   bool chosen = false;
+  // Chosen on its first calibration, but below the minimum gain once its baseline was refitted
+  // from the mechanisms' fits and the forms judged again: the diagnosis was made again on the
+  // stated form. gain_when_chosen is its gain on that first calibration.
+  bool withdrawn = false;
+  double gain_when_chosen = 0.0;
   double heldout_error = 0.0;
   double heldout_gain = 0.0;   // against the stated rule
   ModelFit baseline;
@@ -172,6 +179,7 @@ struct Diagnosis {
   bool normal_law_changed = false;          // another law than the stated one predicts the held-out tests better
   bool footprint_changed = false;           // it is not the specimen's stated rule
   std::vector<FootprintScore> footprints;   // every rule tried (empty: not a cylinder, or not asked)
+  double minimum_gain = 0.2;                // the held-out gain a form or mechanism must reach
   Case specimen;                            // the specimen the fits were made on (on the rule kept)
   std::string second_cause;  // empty when no second effect
   ModelFit baseline;

@@ -59,15 +59,28 @@ inline const CandidateScore& score_of(const Diagnosis& d, Mechanism m) {
 // a distributed Hunt-Crossley footprint, tanh-regularised friction, Boost.Odeint's adaptive
 // Runge-Kutta; six tests of 10 mm sines and time-compressed records), its effects written apart
 // from src/diagnosis/mechanisms. Rates over more seeds are in docs/diagnosis-accuracy.md.
-inline Diagnosis diagnose_independent(const std::string& effect, std::uint64_t seed, const std::string& stated_footprint) {
+// footprint_points > 0: specimen.toml states that many points of the distributed footprint.
+inline Diagnosis diagnose_independent(const std::string& effect, std::uint64_t seed, const std::string& stated_footprint,
+                                      int footprint_points = 0, bool compare_normal_laws = false) {
   const testing::TestDirectory directory;
   independent::MeasuredSetOptions options;
   options.footprint = stated_footprint;
   independent::write_independent_measured_set(directory.path(), effect, seed, options);
+  if (footprint_points > 0) {
+    const std::filesystem::path file = directory.path() / "specimen.toml";
+    std::ifstream in(file);
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string after = "footprint = \"distributed\"\n";
+    const std::size_t at = text.find(after);
+    if (at == std::string::npos) throw std::logic_error("specimen.toml states no distributed footprint");
+    text.insert(at + after.size(), "footprint_points = " + std::to_string(footprint_points) + "\n");
+    std::ofstream(file) << text;
+  }
   const MeasuredSet set = read_measured_set(directory.path());
   DiagnosisOptions diagnosis_options;
   diagnosis_options.threads = 2;
   diagnosis_options.look_for_second_effect = false;
+  diagnosis_options.compare_normal_laws = compare_normal_laws;
   return diagnose(set, diagnosis_options);
 }
 

@@ -77,10 +77,19 @@ TEST(DecisionInvariants, TheAnswerFollowsItsStatedRules) {
   expect_rules(d.ranking, heldout, options);
   expect_rules(d.second_ranking, heldout, options);
 
-  int stated = 0, chosen = 0;
+  int stated = 0, chosen = 0, withdrawn = 0;
   for (const FootprintScore& f : d.footprints) {
     stated += f.stated;
     chosen += f.chosen;
+    withdrawn += f.withdrawn;
+    // A rule other than the stated one is kept only while its gain, judged again after its
+    // baseline's refit, still clears the criterion; else it is withdrawn for the stated rule.
+    if (f.chosen && !f.stated) EXPECT_GE(f.heldout_gain, options.minimum_gain) << f.footprint;
+    if (f.withdrawn) {
+      EXPECT_FALSE(f.chosen || f.stated) << f.footprint;
+      EXPECT_GE(f.gain_when_chosen, options.minimum_gain) << f.footprint;
+      EXPECT_LT(f.heldout_gain, options.minimum_gain) << f.footprint;
+    }
     if (f.chosen) {
       EXPECT_EQ(f.footprint, d.footprint);
       // One calibration per rule: the table's row for the rule kept is the baseline reported.
@@ -91,6 +100,7 @@ TEST(DecisionInvariants, TheAnswerFollowsItsStatedRules) {
   ASSERT_FALSE(d.footprints.empty()) << "a cylinder's rules are all tried";
   EXPECT_EQ(stated, 1);
   EXPECT_EQ(chosen, 1);
+  EXPECT_LE(withdrawn, 1) << "a choice is withdrawn once, for the stated rule";
 
   // Every mechanism was profiled, and its fit is not above its profile's minimum, the fit's
   // own point being on the profile's grid (profile.h) ...
@@ -139,6 +149,12 @@ TEST(DecisionInvariants, TheAnswerFollowsItsStatedRules) {
     EXPECT_EQ(j["ranking"][i].at("heldout_gain").get<double>(), d.ranking[i].heldout_gain);
     EXPECT_EQ(j["ranking"][i].at("significant").get<bool>(), d.ranking[i].significant);
     EXPECT_EQ(j["ranking"][i]["profile"].at("likelihood_ratio").get<double>(), d.ranking[i].profile->likelihood_ratio);
+  }
+  ASSERT_EQ(j.at("footprints").size(), d.footprints.size());
+  for (std::size_t i = 0; i < d.footprints.size(); ++i) {
+    EXPECT_EQ(j["footprints"][i].at("chosen").get<bool>(), d.footprints[i].chosen);
+    EXPECT_EQ(j["footprints"][i].at("withdrawn").get<bool>(), d.footprints[i].withdrawn);
+    EXPECT_EQ(j["footprints"][i].at("heldout_gain").get<double>(), d.footprints[i].heldout_gain);
   }
 }
 
