@@ -16,6 +16,7 @@
 // v is the slip velocity of the contact point relative to the floor.
 
 #include <algorithm>
+#include <type_traits>
 
 #include "kernels/host_device.h"
 #include "kernels/lane.h"
@@ -94,16 +95,22 @@ CASKDEM_HOST_DEVICE inline T lowest_friction(const Model& model, const LaneParam
 // -ffp-contract=off) are within the floor. The laws that cost an exp or a table search are
 // evaluated only when some lane of the batch may slip or be clipped: the same bits, less work
 // while the cask stands or rocks on a pivot that holds.
-template <FrictionLaw Law, class T, class HoldsWithin>
+// The slip speed is a value, or a callable that computes it (a square root in 3D) only where
+// the law is evaluated.
+template <FrictionLaw Law, class T, class SlipSpeed, class HoldsWithin>
 CASKDEM_HOST_DEVICE inline T friction_limit(const Model& model, const LaneParameters<T>& lane_parameters,
-                                            const T& slip_speed, const lane::Mask<T>& was_slipping,
+                                            const SlipSpeed& slip_speed, const lane::Mask<T>& was_slipping,
                                             const T& normal_force, HoldsWithin&& holds_within) {
   if constexpr (Law == FrictionLaw::exponential || Law == FrictionLaw::tabulated) {
     const T zero = lane::broadcast<T>(0.0);
     const T floor = lowest_friction<Law>(model, lane_parameters) * normal_force;
     if (lane::all((holds_within(floor) && floor > zero) || normal_force == zero)) return floor;
   }
-  return friction_coefficient<Law>(model, lane_parameters, slip_speed, was_slipping) * normal_force;
+  if constexpr (std::is_invocable_v<const SlipSpeed&>) {
+    return friction_coefficient<Law>(model, lane_parameters, slip_speed(), was_slipping) * normal_force;
+  } else {
+    return friction_coefficient<Law>(model, lane_parameters, slip_speed, was_slipping) * normal_force;
+  }
 }
 
 }  // namespace caskdem::kernels

@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <type_traits>
 
 #include "kernels/host_device.h"
@@ -116,6 +117,22 @@ CASKDEM_HOST_DEVICE inline T gather(const double* table, const Index<T>& index) 
 template <class T>
 CASKDEM_HOST_DEVICE inline T clamp(const T& value, const T& low, const T& high) {
   return min(max(value, low), high);
+}
+
+// Where sqrt(squared) > bound is surely false, decided without the root: squared is zero and
+// the bound not negative, or squared < (bound (1 - 1e-12))^2, which keeps the root below the
+// bound whatever the roundings of that square and of the root (each relative 2^-53) unless the
+// square underflows (below DBL_MIN its rounding is no longer relative; an overflow to infinity
+// is safe, as squared < infinity is finite and its root below 1.4e154). False where it cannot
+// tell (and for NaN): the caller then takes the root. A batch where every lane is so skips a
+// square root, and often the division that follows it, with the same bits.
+template <class T>
+CASKDEM_HOST_DEVICE inline Mask<T> root_not_above(const T& squared, const T& bound) {
+  const T zero = broadcast<T>(0.0);
+  const T inside = bound * broadcast<T>(1.0 - 1e-12);
+  const T inside_squared = inside * inside;
+  return (squared == zero && bound >= zero) ||
+         (bound > zero && inside_squared >= broadcast<T>(std::numeric_limits<double>::min()) && squared < inside_squared);
 }
 
 // A mask as 1.0 / 0.0, for masks kept in double state arrays between steps.

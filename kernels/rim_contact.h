@@ -62,6 +62,9 @@ CASKDEM_HOST_DEVICE inline RimArc<T> touching_arc(const T& centre_gap, const T& 
   const T towards_sin = select(tilted, -slope_z * per_amplitude, zero);
   const T all_or_none = select(centre_gap < zero, -one, one);
   const T cos_phi = select(tilted, lane::clamp(centre_gap * per_amplitude, -one, one), all_or_none);
+  // The whole ring (cos phi = -1) gives U = sqrt(1) / (1 + sqrt(0)) = 1 and none (cos phi = 1)
+  // U = 0 / 2 = +0 exactly: a batch all so (a standing cask) skips the roots and the division.
+  if (lane::all(cos_phi == -one || cos_phi == one)) return {towards_cos, towards_sin, select(cos_phi < zero, one, zero)};
   const T half_width = lane::sqrt((one - cos_phi) * half) / (one + lane::sqrt((one + cos_phi) * half));
   return {towards_cos, towards_sin, half_width};
 }

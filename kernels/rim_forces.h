@@ -125,9 +125,11 @@ CASKDEM_HOST_DEVICE inline RimSums<T> rim_sums_pressed_all_round(const Contacts3
 }
 
 // The rim's sums for every lane: in closed form where pressed all round, node by node elsewhere;
-// each lane takes its own, and the branches only skip what no lane of the batch takes.
+// each lane takes its own, and the branches only skip what no lane of the batch takes. Always
+// inlined: as a call it spilled the step's live registers (avx2 lanes 20 % slower); the node
+// sums stay a call, which inlined made the avx512f step slower (docs/cask3d.md, "Speed").
 template <class T>
-CASKDEM_HOST_DEVICE inline RimSums<T> rim_sums(const Model& model, const Contacts3D& contacts,
+CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE RimSums<T> rim_sums(const Model& model, const Contacts3D& contacts,
                                                const LaneParameters<T>& p, const RimMotion<T>& rim) {
   using lane::select;
   const RimForceTerms<T> f = force_terms(p, rim);

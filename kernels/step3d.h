@@ -110,16 +110,22 @@ CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE Vector3<T> shear_contact(const Model& 
   const T dt = broadcast<T>(model.time_step);
   const T& slip_x = velocity.spring.slip_x;
   const T& slip_z = velocity.spring.slip_z;
-  const T slip_speed =
-      lane::sqrt(velocity.friction_x * velocity.friction_x + velocity.friction_z * velocity.friction_z);
+  // Taken only where the friction law is evaluated (friction_limit).
+  const auto slip_speed = [&] {
+    return lane::sqrt(velocity.friction_x * velocity.friction_x + velocity.friction_z * velocity.friction_z);
+  };
   const auto was_slipping = state.slipping > broadcast<T>(0.5);
-  // Where it touched before (K_s(previous) > 0), the share of the springs still touching.
+  // Where it touched before (K_s(previous) > 0), the share of the springs still touching: exactly
+  // 1 where the stiffness did not change (the centre under the linear law, the rim pressed all
+  // round), so a batch that is all so skips the division.
   const auto had = state.stiffness > zero;
-  const T kept = select(had, lane::min(one, shear_stiffness / select(had, state.stiffness, one)), zero);
+  T kept = select(had, one, zero);
+  if (!lane::all(!had || state.stiffness == shear_stiffness)) {
+    kept = select(had, lane::min(one, shear_stiffness / select(had, state.stiffness, one)), zero);
+  }
   const T trial_x = state.shear_x * kept - shear_stiffness * slip_x * dt;
   const T trial_z = state.shear_z * kept - shear_stiffness * slip_z * dt;
   const T trial_squared = trial_x * trial_x + trial_z * trial_z;
-  const T trial = lane::sqrt(trial_squared);
   const T dashpot_x = -p.damping_beta * shear_stiffness * velocity.shear_dashpot_x;
   const T dashpot_z = -p.damping_beta * shear_stiffness * velocity.shear_dashpot_z;
   const T sticking_x = trial_x + dashpot_x, sticking_z = trial_z + dashpot_z;
@@ -132,19 +138,31 @@ CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE Vector3<T> shear_contact(const Model& 
     return floor_squared >= broadcast<T>(std::numeric_limits<double>::min()) && trial_squared <= floor_squared &&
            sticking_x * sticking_x + sticking_z * sticking_z <= floor_squared;
   });
-  const auto slipping = touching && (trial > limit);
-  // Both branches computed, blended per lane: slip caps the spring at mu F_n along its own
-  // direction (trial > limit >= 0, so the division is safe where it is used), stick keeps
-  // the trial force, an open contact forgets it.
-  const T cap = select(slipping, limit / select(slipping, trial, one), one);
+  // The trial force's magnitude, and the cap's division, only where some lane of the batch may
+  // slip (lane::root_not_above decides the rest from squares: the same bits).
+  lane::Mask<T> slipping(false);
+  T cap = one;
+  if (!lane::all(lane::root_not_above(trial_squared, limit))) {
+    const T trial = lane::sqrt(trial_squared);
+    slipping = touching && (trial > limit);
+    // Both branches computed, blended per lane: slip caps the spring at mu F_n along its own
+    // direction (trial > limit >= 0, so the division is safe where it is used), stick keeps
+    // the trial force, an open contact forgets it.
+    if (lane::any(slipping)) cap = select(slipping, limit / select(slipping, trial, one), one);
+  }
   const T spring_x = select(touching, trial_x * cap, zero);
   const T spring_z = select(touching, trial_z * cap, zero);
   const auto sticking = touching && !slipping;
   const T shear_x = spring_x + select(sticking, dashpot_x, zero);
   const T shear_z = spring_z + select(sticking, dashpot_z, zero);
-  const T magnitude = lane::sqrt(shear_x * shear_x + shear_z * shear_z);
-  const auto over = magnitude > limit;
-  const T clip = select(over, limit / select(over, magnitude, one), one);
+  // At most mu F_n transmitted; the magnitude and the division only where some lane may exceed it.
+  const T magnitude_squared = shear_x * shear_x + shear_z * shear_z;
+  T clip = one;
+  if (!lane::all(lane::root_not_above(magnitude_squared, limit))) {
+    const T magnitude = lane::sqrt(magnitude_squared);
+    const auto over = magnitude > limit;
+    clip = select(over, limit / select(over, magnitude, one), one);
+  }
   state.shear_x = select(active, spring_x, state.shear_x);
   state.shear_z = select(active, spring_z, state.shear_z);
   state.stiffness = select(active, select(touching, shear_stiffness, zero), state.stiffness);
@@ -277,14 +295,21 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   const Vector3<T> to_base = rotation.apply({-p.centre_x, -p.centre_y, zero});
   const T slide_x = body.x + to_base.x - r.base_x0;
   const T slide_z = body.z + to_base.z - r.base_z0;
-  const T slide = lane::sqrt(slide_x * slide_x + slide_z * slide_z);
+  const T slide_squared = slide_x * slide_x + slide_z * slide_z;
+  const double pad = model.pad_clearance > 0.0 ? model.pad_clearance : 1e300;
+  // The slide's magnitude only where some lane may set a new peak or pass the pad's edge: else
+  // the peak stays and nothing slid off, the same bits as with the root.
+  T slide = r.max_slide;
+  lane::Mask<T> slid_off(false);
+  if (!lane::all(lane::root_not_above(slide_squared, lane::min(r.max_slide, broadcast<T>(pad))))) {
+    slide = lane::sqrt(slide_squared);
+    slid_off = slide > broadcast<T>(pad);
+  }
   const T departure = axis_departure(q, rotation);
   const auto finite = lane::isfinite(body.x + body.y + body.z + body.vx + body.vy + body.vz + body.qw + body.qx + body.qy +
                                      body.qz + body.pi_x + body.pi_y + body.pi_z);
   const auto tipped = departure >= broadcast<T>(contacts.tip_departure);
   const auto left_floor = lowest_gap > broadcast<T>(model.lift_off_height);
-  const double pad = model.pad_clearance > 0.0 ? model.pad_clearance : 1e300;
-  const auto slid_off = slide > broadcast<T>(pad);
   record_stop(active, finite, tipped, left_floor, slid_off, time, r.status, r.end_time);
   const auto running = r.status == zero;
   r.max_axis_departure = lane::max(departure, r.max_axis_departure);
@@ -300,7 +325,10 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   const T bearing_z = (rim_normal * rim_velocity.spring.slip_z + centre_normal * centre_slip_z) * weight;
   r.slip_x = select(bears, r.slip_x + bearing_x * dt, r.slip_x);
   r.slip_z = select(bears, r.slip_z + bearing_z * dt, r.slip_z);
-  r.max_slip = lane::max(lane::sqrt(r.slip_x * r.slip_x + r.slip_z * r.slip_z), r.max_slip);
+  const T slip_squared = r.slip_x * r.slip_x + r.slip_z * r.slip_z;
+  if (!lane::all(lane::root_not_above(slip_squared, r.max_slip))) {
+    r.max_slip = lane::max(lane::sqrt(slip_squared), r.max_slip);
+  }
   const auto above = departure > broadcast<T>(contacts.stability_departure);
   const auto rose_past_alpha = above && (r.above_stability < broadcast<T>(0.5));
   if (lane::any(rose_past_alpha)) r.instability_time = select(rose_past_alpha, time, r.instability_time);

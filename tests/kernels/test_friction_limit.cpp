@@ -3,7 +3,9 @@
 // no bit. Here the 2D corner contact and the 3D spring-slider are set against the law written
 // from its equations, with the exact coefficient every time, at contact states placed on both
 // sides of the floor and of the exact limit, one lane at a time and in batches whose lanes
-// hold or not.
+// hold or not. The 3D slider also skips the square roots and divisions that lane::root_not_above
+// decides from squares, and the division of a stiffness that did not change: the same test holds
+// it to the bits of the law that always takes them.
 
 #include <array>
 #include <cmath>
@@ -104,7 +106,12 @@ std::vector<Situation> situations(const Model& m, std::mt19937_64& random) {
     s.shear_spring = sign * target + m.corner_shear_stiffness[0] * s.slip_velocity * m.time_step;
     s.slip_z = 0.01 * (unit(random) - 0.5) * (unit(random) < 0.5 ? 1e-4 : 1.0);
     s.shear_z = 0.1 * target * (unit(random) - 0.5);
-    s.stiffness = unit(random) < 0.2 ? 0.0 : m.corner_shear_stiffness[0] * (0.8 + 0.4 * unit(random));
+    // Untouched before, or touching at the same stiffness (the centre, a rim pressed all round:
+    // the 3D slider then skips its division), or at another (an arc that narrows or widens).
+    const double stiffness_draw = unit(random);
+    s.stiffness = stiffness_draw < 0.2   ? 0.0
+                  : stiffness_draw < 0.5 ? m.corner_shear_stiffness[0]
+                                         : m.corner_shear_stiffness[0] * (0.8 + 0.4 * unit(random));
     // A spring at -0 that does not slip: its force stays -0, which a zero limit would clamp to +0.
     if (unit(random) < 0.05) s.shear_spring = -0.0, s.slip_velocity = 0.0, s.slip_z = 0.0, s.shear_z = -0.0;
     all.push_back(s);
@@ -276,6 +283,10 @@ void expect_the_law_3d(int table) {
   const Model m = model_with(Law, table);
   const std::vector<Situation> all = situations<Law>(m, random);
   int ways[2] = {0, 0};
+  // Batches whose every lane skips (index 0) or not (1): the division of the stiffness kept, the
+  // trial force's root, the transmitted force's root (shear_contact's shortcuts, as it decides
+  // them at the exact limit).
+  int kept_ways[2] = {0, 0}, trial_ways[2] = {0, 0}, magnitude_ways[2] = {0, 0};
   for (std::size_t i = 0; i + kWidth <= all.size(); i += kWidth) {
     std::array<const Situation*, kWidth> lanes;
     for (std::size_t l = 0; l < kWidth; ++l) {
@@ -321,6 +332,7 @@ void expect_the_law_3d(int table) {
     // Which way the batch went, with the 3D spring-slider's own test of its forces.
     const Wide one(1.0);
     const auto had = before.stiffness > Wide(0.0);
+    kept_ways[xsimd::all(!had || before.stiffness == ks) ? 0 : 1]++;
     const Wide kept = xsimd::select(had, xsimd::min(one, ks / xsimd::select(had, before.stiffness, one)), Wide(0.0));
     const Wide trial_x = before.shear_x * kept - ks * slip_x * Wide(m.time_step);
     const Wide trial_z = before.shear_z * kept - ks * slip_z * Wide(m.time_step);
@@ -333,8 +345,17 @@ void expect_the_law_3d(int table) {
              sticking_x * sticking_x + sticking_z * sticking_z <= inside * inside;
     });
     if (way != 0) ways[way > 0 ? 0 : 1]++;
+    const Wide exact = friction_coefficient<Law>(m, p, speed, before.slipping > Wide(0.5)) * normal;
+    trial_ways[xsimd::all(lane::root_not_above(trial_x * trial_x + trial_z * trial_z, exact)) ? 0 : 1]++;
+    // The force transmitted equals the force before the clip where that is decided within the
+    // limit, and is the limit itself (not decided within it) where the clip acted.
+    magnitude_ways[xsimd::all(lane::root_not_above(got.x * got.x + got.z * got.z, exact)) ? 0 : 1]++;
   }
   if (table < 2) expect_both_ways(ways);
+  for (const int* w : {kept_ways, trial_ways, magnitude_ways}) {
+    EXPECT_GT(w[0], 100) << "batches that skip a root or a division";
+    EXPECT_GT(w[1], 100) << "batches that take it";
+  }
 }
 
 TEST(FrictionLimit, TheFloorChangesNoBitOfTheExponentialLaw3D) { expect_the_law_3d<FrictionLaw::exponential>(0); }

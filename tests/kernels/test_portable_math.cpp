@@ -92,5 +92,50 @@ TEST(PortableMath, SinCosWithoutReductionGivesTheReductionsBits) {
   }
 }
 
+// lane::root_not_above lets the 3D step skip a square root (and the division after it) where
+// every lane of a batch is decided from squares. It must never hide a root above its bound: at
+// squares placed within a few ulp of the bound's square, across the range of magnitudes the
+// contact forces and slides take, at the edges (zero, -0, subnormal, the underflow of the
+// square, infinities, NaN), one lane at a time and in batches. And it must decide most
+// clear cases, or it saves nothing.
+TEST(PortableMath, RootNotAboveNeverHidesARootAboveItsBound) {
+  std::mt19937_64 random(29);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  const double edges[] = {0.0, -0.0, 4.9e-324, 1e-310, 2.2250738585072014e-308, 1e-160, 1.5e-154, 1e-150,
+                          1.0, 1e150, 1e300, HUGE_VAL, std::nan("")};
+  std::vector<double> squares, bounds;
+  for (double b : edges) {
+    for (double q : edges) squares.push_back(q), bounds.push_back(b);
+    squares.push_back(b * b), bounds.push_back(b);
+  }
+  long clear = 0, decided = 0;
+  for (int i = 0; i < 400000; ++i) {
+    const double bound = std::pow(10.0, -200.0 + 400.0 * unit(random)) * (unit(random) < 0.02 ? -1.0 : 1.0);
+    double squared = bound * bound * (1.0 + std::ldexp(unit(random) - 0.5, -40 + static_cast<int>(40 * unit(random))));
+    for (int k = static_cast<int>(8 * unit(random)) - 4; k != 0; k += k > 0 ? -1 : 1) {
+      squared = std::nextafter(squared, k > 0 ? HUGE_VAL : 0.0);  // a few ulp either way
+    }
+    if (unit(random) < 0.2) squared = bound * bound * unit(random);  // clearly below
+    squares.push_back(squared), bounds.push_back(bound);
+  }
+  for (std::size_t i = 0; i < squares.size(); ++i) {
+    const bool above = std::sqrt(squares[i]) > bounds[i];
+    const bool not_above = lane::root_not_above(squares[i], bounds[i]);
+    ASSERT_FALSE(not_above && above) << "sqrt(" << squares[i] << ") against " << bounds[i];
+    if (bounds[i] > 1e-150 && bounds[i] < 1e150 && squares[i] < 0.99 * bounds[i] * bounds[i]) {
+      ++clear;
+      decided += not_above;
+    }
+  }
+  EXPECT_EQ(decided, clear) << "a clear case left to the root";
+  EXPECT_GT(clear, 50000);
+  using Wide = xsimd::batch<double, xsimd::sse2>;
+  for (std::size_t i = 0; i + 2 <= squares.size(); i += 2) {
+    const auto got = lane::root_not_above(Wide::load_unaligned(&squares[i]), Wide::load_unaligned(&bounds[i]));
+    ASSERT_EQ(got.get(0), lane::root_not_above(squares[i], bounds[i]));
+    ASSERT_EQ(got.get(1), lane::root_not_above(squares[i + 1], bounds[i + 1]));
+  }
+}
+
 }  // namespace
 }  // namespace caskdem::kernels
