@@ -540,9 +540,10 @@ Diagnosis diagnose(const MeasuredSet& given, const DiagnosisOptions& options) {
   }
   Diagnosis d = diagnose_on_form(given, footprint, options);
   // A form chosen over the stated one must still be preferred once its baseline is refitted
-  // and the forms judged again: the refit narrows its fit's spread and so the common held-out
-  // tolerances, and can turn its gain negative. Else the mechanisms are fitted again on the
-  // stated form, which stays (no second switch, which could cycle).
+  // and the forms judged again: the refit can find a lower training J in another basin that
+  // predicts the held-out tests worse (and it moves the common held-out tolerances). Else the
+  // mechanisms are fitted again on the stated form, which stays (no second switch, which
+  // could cycle).
   if (footprint && footprint->chosen != footprint->stated &&
       d.footprints[footprint->chosen].heldout_gain < options.minimum_gain) {
     const std::size_t withdrawn = footprint->chosen;
