@@ -110,7 +110,13 @@ CASKDEM_HOST_DEVICE inline T gather(const double* table, const Index<T>& index) 
   if constexpr (std::is_same_v<T, double>) {
     return table[index];
   } else {
-    return T::gather(table, index);
+    // Lane by lane, inlined: xsimd's gather compiled to a call that spilled the step's registers
+    // (docs/performance.md, "The table motion's gather"). The same values.
+    alignas(64) std::int64_t at[width<T>];
+    alignas(64) double values[width<T>];
+    index.store_aligned(at);
+    for (std::size_t l = 0; l < width<T>; ++l) values[l] = table[at[l]];
+    return T::load_aligned(values);
   }
 }
 
