@@ -24,7 +24,6 @@
 // slider), with the stiffness-proportional dashpot -beta K_s v_s while it sticks.
 
 #include <cstdint>
-#include <limits>
 
 #include "kernels/contact_law.h"
 #include "kernels/end_criteria.h"
@@ -129,14 +128,11 @@ CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE Vector3<T> shear_contact(const Model& 
   const T dashpot_x = -p.damping_beta * shear_stiffness * velocity.shear_dashpot_x;
   const T dashpot_z = -p.damping_beta * shear_stiffness * velocity.shear_dashpot_z;
   const T sticking_x = trial_x + dashpot_x, sticking_z = trial_z + dashpot_z;
-  // Squares against a square a little inside the floor's, so that the magnitudes taken below
-  // (square roots of these same sums) are within the floor whatever their rounding; not where
-  // the squares underflow (a floor below 1e-154 N), whose rounding is no longer relative.
+  // Decided from squares (lane::root_not_above), so that the magnitudes taken below (square
+  // roots of these same sums) are within the floor whatever their rounding.
   const T limit = friction_limit<Law>(model, p, slip_speed, was_slipping, normal, [&](const T& floor) {
-    const T inside = floor * broadcast<T>(1.0 - 1e-12);
-    const T floor_squared = inside * inside;
-    return floor_squared >= broadcast<T>(std::numeric_limits<double>::min()) && trial_squared <= floor_squared &&
-           sticking_x * sticking_x + sticking_z * sticking_z <= floor_squared;
+    return lane::root_not_above(trial_squared, floor) &&
+           lane::root_not_above(sticking_x * sticking_x + sticking_z * sticking_z, floor);
   });
   // The trial force's magnitude, and the cap's division, only where some lane of the batch may
   // slip (lane::root_not_above decides the rest from squares: the same bits).

@@ -19,6 +19,17 @@
 
 namespace caskdem::diagnosis {
 
+// specimen.toml in `directory` with its text `from` replaced by `to`.
+inline void edit_specimen(const std::filesystem::path& directory, const std::string& from, const std::string& to) {
+  const std::filesystem::path file = directory / "specimen.toml";
+  std::ifstream in(file);
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t at = text.find(from);
+  if (at == std::string::npos) throw std::logic_error("specimen.toml does not say " + from);
+  text.replace(at, from.size(), to);
+  std::ofstream(file) << text;
+}
+
 // With `report`, diagnosis.json and report.md are written there too (no plots).
 inline Diagnosis diagnose_synthetic(const std::vector<Mechanism>& hidden, std::uint64_t seed, bool second_effect,
                                     const std::string& stated_rule = "gyration",
@@ -31,12 +42,7 @@ inline Diagnosis diagnose_synthetic(const std::vector<Mechanism>& hidden, std::u
   spec.normal_law = data_law;
   write_synthetic_measured_set(directory.path(), spec);
   if (stated_rule != "gyration") {  // the data's own rule; the specimen file states another
-    const std::filesystem::path file = directory.path() / "specimen.toml";
-    std::ifstream in(file);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::string from = "half_width = \"gyration\"";
-    text.replace(text.find(from), from.size(), "half_width = \"" + stated_rule + "\"");
-    std::ofstream(file) << text;
+    edit_specimen(directory.path(), "half_width = \"gyration\"", "half_width = \"" + stated_rule + "\"");
   }
   const MeasuredSet set = read_measured_set(directory.path());
   DiagnosisOptions options;
@@ -67,14 +73,8 @@ inline Diagnosis diagnose_independent(const std::string& effect, std::uint64_t s
   options.footprint = stated_footprint;
   independent::write_independent_measured_set(directory.path(), effect, seed, options);
   if (footprint_points > 0) {
-    const std::filesystem::path file = directory.path() / "specimen.toml";
-    std::ifstream in(file);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::string after = "footprint = \"distributed\"\n";
-    const std::size_t at = text.find(after);
-    if (at == std::string::npos) throw std::logic_error("specimen.toml states no distributed footprint");
-    text.insert(at + after.size(), "footprint_points = " + std::to_string(footprint_points) + "\n");
-    std::ofstream(file) << text;
+    const std::string rule = "footprint = \"distributed\"\n";
+    edit_specimen(directory.path(), rule, rule + "footprint_points = " + std::to_string(footprint_points) + "\n");
   }
   const MeasuredSet set = read_measured_set(directory.path());
   DiagnosisOptions diagnosis_options;

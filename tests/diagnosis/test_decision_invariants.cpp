@@ -84,7 +84,9 @@ TEST(DecisionInvariants, TheAnswerFollowsItsStatedRules) {
     withdrawn += f.withdrawn;
     // A rule other than the stated one is kept only while its gain, judged again after its
     // baseline's refit, still clears the criterion; else it is withdrawn for the stated rule.
-    if (f.chosen && !f.stated) EXPECT_GE(f.heldout_gain, options.minimum_gain) << f.footprint;
+    if (f.chosen && !f.stated) {
+      EXPECT_GE(f.heldout_gain, options.minimum_gain) << f.footprint;
+    }
     if (f.withdrawn) {
       EXPECT_FALSE(f.chosen || f.stated) << f.footprint;
       EXPECT_GE(f.gain_when_chosen, options.minimum_gain) << f.footprint;

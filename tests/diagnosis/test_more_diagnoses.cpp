@@ -224,7 +224,9 @@ TEST(IndependentData, AFormThatNoLongerGainsAfterItsRefitIsWithdrawn) {
   int withdrawn = 0;
   for (const FootprintScore& f : d.footprints) {
     RecordProperty("heldout_gain_" + form_label(f, true), std::to_string(f.heldout_gain));
-    if (f.chosen && !f.stated) EXPECT_GE(f.heldout_gain, d.minimum_gain) << form_label(f, true);
+    if (f.chosen && !f.stated) {
+      EXPECT_GE(f.heldout_gain, d.minimum_gain) << form_label(f, true);
+    }
     if (f.withdrawn) {
       ++withdrawn;
       RecordProperty("withdrawn", form_label(f, true) + " gain when chosen " + std::to_string(f.gain_when_chosen));
