@@ -24,6 +24,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 UNITS = {"pga": ("PGA [g]", 1.0 / 9.80665), "pgv": ("PGV [cm/s]", 100.0),
          "pga_ratio": ("PGA / (g tan alpha)", 1.0), "pgv_ratio": ("PGV p / (g tan alpha)", 1.0),
          "sa": ("Sa(T) [g]", 1.0 / 9.80665)}
+# The unit a median is read in, beside it in the legend (the ratios have none).
+MEDIAN_UNITS = {"pga": " g", "pgv": " cm/s", "pga_ratio": "", "pgv_ratio": "", "sa": " g"}
 
 
 def text(value):
@@ -90,6 +92,7 @@ def main(result_file, png_file):
     with h5py.File(result_file, "r") as f:
         measure = text(f.attrs["intensity_measure"])
         label, factor = axis_label(f, measure)
+        unit = MEDIAN_UNITS[measure]
         title = text(f.attrs.get("title", ""))
         completed = int(f.attrs["completed"])
         total = int(f.attrs["realisations"])
@@ -103,13 +106,13 @@ def main(result_file, png_file):
         errors = np.vstack([s["p"] - s["low"], s["high"] - s["p"]])
         x = s["band_im"] if s["fitted"] else np.linspace(0.5 * s["level"].min(), 1.5 * s["level"].max(), 201)
         family = s.get("family")
-        family_text = ("; A_m %.3g, beta_R %.2f, beta_U %.2f" % (family["median"], family["beta_r"], family["beta_u"])
-                       if family else "")
+        family_text = ("; A_m %.3g%s, beta_R %.2f, beta_U %.2f" % (family["median"], unit, family["beta_r"],
+                                                                    family["beta_u"]) if family else "")
         if s["fitted"]:
             curve = [phi(math.log(v / s["median"]) / s["beta"]) for v in x]
             rejected = s.get("rejected", 0)
             ax.fill_between(x, s["band_low"], s["band_high"], color=colour, alpha=0.18, lw=0)
-            name = "%s: median %.3g, beta %.2f" % (s["name"], s["median"], s["beta"])
+            name = "%s: median %.3g%s, beta %.2f" % (s["name"], s["median"], unit, s["beta"])
             if "test_p" in s:
                 name += ("; fit REJECTED (p %.2g)" if rejected else "; fit holds (p %.2g)") % s["test_p"]
             ax.plot(x, curve, color=colour, ls="--" if rejected else "-", label=name + family_text)
