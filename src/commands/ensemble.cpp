@@ -85,6 +85,9 @@ void run_ensemble_command(const EnsembleOptions& options, [[maybe_unused]] const
                                                           plan.model().normal_law == NormalLaw::hunt_crossley
                                                               ? " + each realisation's damping ratio's share"
                                                               : "") << "\n";
+    if (const std::string restitution = restitution_text(plan); !restitution.empty()) {
+      std::cout << "restitution     " << restitution << "\n";
+    }
     if (device) {
       const std::int64_t lanes =
           std::min<std::int64_t>(plan.size(), device->lane_capacity(plan.three_d() ? 3 : 2, plan.model().friction_law));

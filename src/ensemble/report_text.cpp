@@ -1,5 +1,6 @@
 #include "ensemble/report_text.h"
 
+#include <algorithm>
 #include <cmath>
 #include <iomanip>
 #include <sstream>
@@ -7,6 +8,24 @@
 #include "core/text.h"
 
 namespace caskdem {
+
+std::string restitution_text(const EnsemblePlan& plan) {
+  const CalibrationCurve& curve = plan.calibration();
+  if (!plan.restitution_uncertain() || curve.restitution.empty()) return "";
+  double lowest = curve.highest(), highest = curve.lowest();
+  for (std::int64_t i = 0; i < plan.size(); ++i) {
+    const double e = plan.realisation(i).restitution;
+    lowest = std::min(lowest, e);
+    highest = std::max(highest, e);
+  }
+  std::ostringstream out;
+  // The highest restitution needs the least damping.
+  out << std::setprecision(4) << std::fixed << lowest << " to " << highest << " -> damping ratio "
+      << std::setprecision(3) << std::defaultfloat << curve.damping_for(lowest) << " to "
+      << curve.damping_for(highest) << " (the nominal cask's free rocking at this step, which reaches " << std::setprecision(4)
+      << std::fixed << curve.lowest() << " to " << curve.highest() << ")";
+  return out.str();
+}
 
 namespace {
 
