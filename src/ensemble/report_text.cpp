@@ -22,8 +22,8 @@ std::string restitution_text(const EnsemblePlan& plan) {
   // The highest restitution needs the least damping.
   out << std::setprecision(4) << std::fixed << lowest << " to " << highest << " -> damping ratio "
       << std::setprecision(3) << std::defaultfloat << curve.damping_for(lowest) << " to "
-      << curve.damping_for(highest) << " (the nominal cask's free rocking at this step, which reaches " << std::setprecision(4)
-      << std::fixed << curve.lowest() << " to " << curve.highest() << ")";
+      << curve.damping_for(highest) << " (the nominal cask's free rocking at this step, which reaches "
+      << std::setprecision(4) << std::fixed << curve.lowest() << " to " << curve.highest() << ")";
   return out.str();
 }
 

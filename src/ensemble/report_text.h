@@ -22,8 +22,9 @@ std::string scaled_intensity_text(const EnsembleSpec& spec, double value, double
 
 // Where restitution is uncertain: the sampled range, the damping ratios it calibrates to at the
 // ensemble's step and the range the nominal cask's free rocking can reach ("0.9400 to 0.9699 ->
-// damping ratio 0.119 to 0.00239 ..."). The top of a range near the undamped limit means nearly undamped
-// contacts, which ring between impacts (docs/time-step.md). Empty without uncertain restitution.
+// damping ratio 0.119 to 0.00239 ..."). The top of a range near the undamped limit means nearly
+// undamped contacts, which ring between impacts (docs/time-step.md). Empty without uncertain
+// restitution.
 std::string restitution_text(const EnsemblePlan& plan);
 
 // The lines for one limit state, the first led by its name in a column of 20.
