@@ -130,7 +130,7 @@ CASKDEM_HOST_DEVICE inline RimSums<T> rim_sums_pressed_all_round(const Contacts3
 // sums stay a call, which inlined made the avx512f step slower (docs/cask3d.md, "Speed").
 template <class T>
 CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE RimSums<T> rim_sums(const Model& model, const Contacts3D& contacts,
-                                               const LaneParameters<T>& p, const RimMotion<T>& rim) {
+                                                              const LaneParameters<T>& p, const RimMotion<T>& rim) {
   using lane::select;
   const RimForceTerms<T> f = force_terms(p, rim);
   const auto closed = pressed_all_round(model, p, rim, f);
