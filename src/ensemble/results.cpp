@@ -225,6 +225,9 @@ std::vector<char> result_image(const std::filesystem::path& file, const Ensemble
       hdf5::Group calibration = root.group("calibration");
       calibration.write("damping_ratio", plan.calibration().damping_ratio, "1");
       calibration.write("restitution", plan.calibration().restitution, "1");
+      calibration.attribute("of", std::string("the nominal cask's free rocking at the ensemble's time step: its "
+                                              "restitution against its damping ratio, made monotone; each "
+                                              "realisation's restitution maps to its damping ratio through it"));
     }
 
     if (limit_states) write_limit_states(root, plan, *limit_states);
