@@ -24,7 +24,8 @@
 //
 // v_n and v_s are the normal and tangential velocities of the contact point relative to the
 // floor. The spring's increment reads v_s at the half step (central differences: the slip from
-// t_{n-1} to t_n); the dashpots and mu read it at the half step as the source paper does, or at
+// t_{n-1} to t_n, or under the whole-step slider the part of it since a touch within the step);
+// the dashpots and mu read it at the half step as the source paper does, or at
 // the whole step where Model::whole_step_terms asks (kernels/slider.h). beta is the stiffness-proportional
 // (Rayleigh) damping coefficient: a damping ratio h at circular frequency omega gives
 // beta = 2 h / omega (Clough & Penzien, Dynamics of Structures, eq. 12-37). A corner out of
@@ -173,7 +174,13 @@ CASKDEM_HOST_DEVICE inline CornerContact<T> corner_contact(const Model& model, c
   // K_s times the spring's stretch: the force itself under the linear law, which the Hertz law
   // multiplies by Mindlin's factor of the present overlap (the law is the model's: a uniform branch).
   const bool hertz = model.normal_law == NormalLaw::hunt_crossley;
-  const T stretch = previous.shear_spring - shear_stiffness * velocity.spring.slip_x * broadcast<T>(model.time_step);
+  // How long the spring stretched in this step: dt, or under the whole-step slider the time
+  // since a touch within it (kernels/slider.h; a model-wide choice: a uniform branch).
+  T stretch_time = broadcast<T>(model.time_step);
+  if (model.whole_step_terms & kSpringSinceTouch) {
+    stretch_time = stretch_time * slip_since_touch(lane::max(-gap, zero), velocity.spring.normal, model.time_step);
+  }
+  const T stretch = previous.shear_spring - shear_stiffness * velocity.spring.slip_x * stretch_time;
   T trial = stretch, sticking_stiffness = shear_stiffness, mindlin = zero;
   if (hertz) {
     mindlin = mindlin_factor(model, gap);

@@ -32,14 +32,17 @@ enum class NormalLaw : std::int32_t {
   hunt_crossley = 1,  // K d sqrt(d / d_H) (1 - lambda v_n)
 };
 
-// Which of the spring-slider's velocity-dependent terms read the velocity at the whole step t_n
-// (extrapolated, kernels/slider.h) rather than at the half step t_{n-1/2} as the source paper's
-// central-difference scheme does; a bit set per term, so that each can be studied alone.
+// Where the whole-step slider departs from the source paper's central-difference scheme
+// (kernels/slider.h), a bit set per term, so that each can be studied alone: which of the
+// spring-slider's velocity-dependent terms read the velocity at the whole step t_n
+// (extrapolated) rather than at the half step t_{n-1/2}, and whether a contact that touches
+// within a step stretches its shear spring by the slip since the touch rather than the step's.
 enum WholeStepTerm : std::int32_t {
   kWholeStepNormalDashpot = 1,  // the normal dashpot beta K_n v_n (and the impact damper)
   kWholeStepShearDashpot = 2,   // the sticking contact's shear dashpot beta K_s v_s
   kWholeStepFriction = 4,       // the slip speed the friction law reads, mu(|v_s|)
-  kWholeStepSlider = kWholeStepNormalDashpot | kWholeStepShearDashpot | kWholeStepFriction,
+  kSpringSinceTouch = 8,        // a new contact's shear spring: the slip since the touch
+  kWholeStepSlider = kWholeStepNormalDashpot | kWholeStepShearDashpot | kWholeStepFriction | kSpringSinceTouch,
 };
 
 // How a lane ended. A tipped cask is a result, not an error.

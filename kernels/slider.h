@@ -17,6 +17,22 @@
 // v(n-1/2) - v(n-3/2) (kernels/lane_state.h). At a step where the kick is zero (the first step
 // from rest) both readings agree. Each of the three terms can read either, so that what each
 // contributes can be measured alone (kernels/model.h, WholeStepTerm).
+//
+// The spring at a touch. A contact that opens between t_{n-1} and t_n (gap g_{n-1} > 0 >= g_n)
+// touched at t* within the step; the spring stretches only from t*, so its increment is K_s
+// times the slip from t* to t_n, not the step's. The scheme moves the body linearly over the
+// step (x_n = x_{n-1} + v(n-1/2) dt), so the gap falls linearly, g_{n-1} - g_n = -v_n dt + O(dt^2)
+// with v_n the contact point's half-step normal velocity, and the slip after t* is the fraction
+//
+//   phi = d_n / (-v_n dt)    where d_n = -g_n < -v_n dt (the contact was open at t_{n-1}),
+//   phi = 1                  otherwise (it touched at t_{n-1} as well),
+//
+// of the step's. The paper's scheme takes phi = 1 always, which stretches a new spring by half a
+// step's slip too much on average, always against the slip: a first-order error with a sign.
+// Where the contact sticks at once (high friction, a short contact: a landing, a bounce) the
+// extra stretch stays in the spring and throws the cask off too hard; lightly damped contacts
+// bounce many times a rocking impact, so the error accumulates into a bias of the ensemble's
+// fragility (docs/time-step.md, "The spring at a touch"). phi makes it second order.
 
 #include "kernels/host_device.h"
 #include "kernels/lane.h"
@@ -57,6 +73,19 @@ template <class T>
 struct BodyVelocity {
   T vx, vy, omega;
 };
+
+// The fraction phi of the step's slip that a contact's shear spring takes (above): 1 unless the
+// contact opened within the step, where it is the overlap over the step's approach.
+template <class T>
+CASKDEM_HOST_DEVICE inline T slip_since_touch(const T& overlap, const T& normal_velocity, double time_step) {
+  using lane::broadcast;
+  using lane::select;
+  const T one = broadcast<T>(1.0);
+  const T approach = lane::max(-normal_velocity, broadcast<T>(0.0)) * broadcast<T>(time_step);
+  const auto opened = overlap < approach;  // false wherever the contact does not approach
+  // Both sides computed, blended per lane: the division only where it is taken (approach > 0).
+  return select(opened, overlap / select(opened, approach, one), one);
+}
 
 // v(n-1/2) + kick / 2: the whole-step value of a half-step velocity from its last change.
 template <class T>

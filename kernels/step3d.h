@@ -95,18 +95,25 @@ CASKDEM_HOST_DEVICE inline void for_each_rim_node(const Contacts3D& contacts, co
 // The rim's K_s is that of the arc it touches on, which narrows and widens as the cask rocks:
 // springs that leave the arc take their share of the force with them (F_s(previous) scaled by
 // K_s / K_s(previous) when that is below 1), and springs that join it come unstretched (the
-// force kept). The centre's K_s is constant, and its force is kept as in 2D.
+// force kept). The centre's K_s is constant, and its force is kept as in 2D. Under the whole-step
+// slider a contact that opened within the step stretches by the slip since the touch, from its
+// overlap (the rim's at its lowest point) and its approach (kernels/slider.h).
 // Always inlined: as a call (two a step) it would spill every live SIMD register of the step.
 template <FrictionLaw Law, class T, class Mask>
 CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p,
                                                                    const Mask& touching, const Mask& active,
                                                                    const T& normal, const T& shear_stiffness,
-                                                                   const SliderVelocities<T>& velocity,
+                                                                   const T& overlap, const SliderVelocities<T>& velocity,
                                                                    ContactState3D<T>& state) {
   using lane::broadcast;
   using lane::select;
   const T zero = broadcast<T>(0.0), one = broadcast<T>(1.0);
-  const T dt = broadcast<T>(model.time_step);
+  // How long the spring stretched in this step: dt, or under the whole-step slider the time
+  // since a touch within it (a model-wide choice: a uniform branch).
+  T stretch_time = broadcast<T>(model.time_step);
+  if (model.whole_step_terms & kSpringSinceTouch) {
+    stretch_time = stretch_time * slip_since_touch(overlap, velocity.spring.normal, model.time_step);
+  }
   const T& slip_x = velocity.spring.slip_x;
   const T& slip_z = velocity.spring.slip_z;
   // Taken only where the friction law is evaluated (friction_limit).
@@ -122,8 +129,8 @@ CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE Vector3<T> shear_contact(const Model& 
   if (!lane::all(!had || state.stiffness == shear_stiffness)) {
     kept = select(had, lane::min(one, shear_stiffness / select(had, state.stiffness, one)), zero);
   }
-  const T trial_x = state.shear_x * kept - shear_stiffness * slip_x * dt;
-  const T trial_z = state.shear_z * kept - shear_stiffness * slip_z * dt;
+  const T trial_x = state.shear_x * kept - shear_stiffness * slip_x * stretch_time;
+  const T trial_z = state.shear_z * kept - shear_stiffness * slip_z * stretch_time;
   const T trial_squared = trial_x * trial_x + trial_z * trial_z;
   const T dashpot_x = -p.damping_beta * shear_stiffness * velocity.shear_dashpot_x;
   const T dashpot_z = -p.damping_beta * shear_stiffness * velocity.shear_dashpot_z;
@@ -254,7 +261,8 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
                              select(pushing, pressure_moment.z * per_pushed, lowest.z)};
   const SliderVelocities<T> rim_velocity = contact_velocities(rim_lever);
   const Vector3<T> rim_friction =
-      shear_contact<Law>(model, p, rim_touching, active, rim_normal, rim_shear_stiffness, rim_velocity, points[0]);
+      shear_contact<Law>(model, p, rim_touching, active, rim_normal, rim_shear_stiffness,
+                         lane::max(rim.amplitude - rim.centre_gap, zero), rim_velocity, points[0]);
   // The normal forces' moment: sum l_j x (0, F_n,j, 0) = (sum F_n,j l_j) x e_y.
   const Vector3<T> rim_moment = cross(rim_lever, rim_friction);
   Vector3<T> force{rim_friction.x, rim_normal, rim_friction.z};
@@ -275,7 +283,8 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
     centre_slip_x = centre_velocity.spring.slip_x;
     centre_slip_z = centre_velocity.spring.slip_z;
     const Vector3<T> friction =
-        shear_contact<Law>(model, p, gap < zero, active, normal, shear_stiffness, centre_velocity, points[1]);
+        shear_contact<Law>(model, p, gap < zero, active, normal, shear_stiffness, lane::max(-gap, zero),
+                           centre_velocity, points[1]);
     const Vector3<T> contact{friction.x, normal, friction.z};
     force = {force.x + contact.x, force.y + contact.y, force.z + contact.z};
     const Vector3<T> moment = cross(lever, contact);

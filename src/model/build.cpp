@@ -91,6 +91,9 @@ constexpr SliderScheme kSliderSchemes[] = {
     {"whole-step-normal-dashpot", kWholeStepNormalDashpot},
     {"whole-step-shear-dashpot", kWholeStepShearDashpot},
     {"whole-step-friction", kWholeStepFriction},
+    {"spring-since-touch", kSpringSinceTouch},
+    // The whole-step slider without the spring's touch rule: its velocities alone.
+    {"whole-step-velocities", kWholeStepNormalDashpot | kWholeStepShearDashpot | kWholeStepFriction},
 };
 }  // namespace
 

@@ -29,7 +29,8 @@ namespace caskdem {
 // The slider schemes by name, as case and ensemble files give them ([integration] slider):
 // "half-step" (the source paper's), "whole-step" (every term), and one term alone for studying
 // what each contributes ("whole-step-normal-dashpot", "whole-step-shear-dashpot",
-// "whole-step-friction").
+// "whole-step-friction", "spring-since-touch"), or the three velocities without the spring's
+// touch rule ("whole-step-velocities").
 const std::vector<std::string>& slider_names();
 std::int32_t whole_step_terms_of(const std::string& slider_name);
 std::string slider_name_of(std::int32_t whole_step_terms);

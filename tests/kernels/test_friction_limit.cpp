@@ -295,7 +295,7 @@ void expect_the_law_3d(int table) {
       const double normal = normal_force(m, m.corner_normal_stiffness[0], s.p, s.gap, s.normal_velocity);
       ContactState3D<double> got_state = state_3d(s), want_state = state_3d(s);
       const Vector3<double> got =
-          shear_contact<Law>(m, s.p, s.gap < 0.0, true, normal, m.corner_shear_stiffness[0],
+          shear_contact<Law>(m, s.p, s.gap < 0.0, true, normal, m.corner_shear_stiffness[0], std::max(-s.gap, 0.0),
                              half_step(s.normal_velocity, s.slip_velocity, s.slip_z), got_state);
       const Vector3<double> want = law_3d<Law>(m, s, want_state);
       ASSERT_TRUE(same_bits(got.x, want.x)) << got.x << " vs " << want.x;
@@ -318,7 +318,7 @@ void expect_the_law_3d(int table) {
     ContactState3D<Wide> state = before;
     const Wide ks(m.corner_shear_stiffness[0]);
     const Vector3<Wide> got = shear_contact<Law>(m, p, gap < Wide(0.0), Wide(0.0) == Wide(0.0), normal, ks,
-                                                 half_step(Wide(0.0), slip_x, slip_z), state);
+                                                 lane::max(-gap, Wide(0.0)), half_step(Wide(0.0), slip_x, slip_z), state);
     for (std::size_t l = 0; l < kWidth; ++l) {
       ContactState3D<double> want_state = state_3d(*lanes[l]);
       const Vector3<double> want = law_3d<Law>(m, *lanes[l], want_state);
