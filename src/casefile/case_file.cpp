@@ -226,7 +226,10 @@ double positive_duration(const TableReader& t, std::string_view key, double valu
 void read_integration(TableReader& root, Case& c) {
   if (!root.has_table("integration")) return;
   TableReader t = root.table("integration");
-  c.model.safety_factor = t.in_range("safety_factor", t.quantity_or("safety_factor", Dimension::dimensionless, 0.01), 1e-6, 1.0);
+  // The defaults are the caller's: a case's the paper's f_s = 0.01 and half-step slider (ModelSpec),
+  // an ensemble's its own (ensemble/ensemble_file.h).
+  c.model.safety_factor =
+      t.in_range("safety_factor", t.quantity_or("safety_factor", Dimension::dimensionless, c.model.safety_factor), 1e-6, 1.0);
   c.model.contact_stiffness_scale = t.in_range(
       "contact_stiffness_scale", t.quantity_or("contact_stiffness_scale", Dimension::dimensionless, 1.0), 1e-4, 1.0);
   c.model.whole_step_terms =

@@ -183,6 +183,8 @@ EnsembleSpec read_ensemble(const toml::table& document, const std::filesystem::p
   c.file = file;
   c.name = e.name;
   c.title = e.title;
+  c.model.safety_factor = kEnsembleSafetyFactor;
+  c.model.whole_step_terms = kEnsembleSlider;
   read_cask_and_contact(root, c, /*three_d_allowed=*/true);
   if (c.rest_cap_given) {
     root.table("integration").fail("rest_cap", "an ensemble's realisations run for duration, or their motion and "
