@@ -97,7 +97,8 @@ CASKDEM_HOST_DEVICE inline void for_each_rim_node(const Contacts3D& contacts, co
 // K_s / K_s(previous) when that is below 1), and springs that join it come unstretched (the
 // force kept). The centre's K_s is constant, and its force is kept as in 2D. Under the whole-step
 // slider a contact that opened within the step stretches by the slip since the touch, from its
-// overlap (the rim's at its lowest point) and its approach (kernels/slider.h).
+// overlap (the rim's at its lowest point) and its approach (kernels/slider.h), and the springs
+// that joined a touching arc within the step by half the step's slip.
 // Always inlined: as a call (two a step) it would spill every live SIMD register of the step.
 template <FrictionLaw Law, class T, class Mask>
 CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE Vector3<T> shear_contact(const Model& model, const LaneParameters<T>& p,
@@ -129,8 +130,16 @@ CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE Vector3<T> shear_contact(const Model& 
   if (!lane::all(!had || state.stiffness == shear_stiffness)) {
     kept = select(had, lane::min(one, shear_stiffness / select(had, state.stiffness, one)), zero);
   }
-  const T trial_x = state.shear_x * kept - shear_stiffness * slip_x * stretch_time;
-  const T trial_z = state.shear_z * kept - shear_stiffness * slip_z * stretch_time;
+  // The stiffness the step's slip stretches: K_s, or under the whole-step slider less half of
+  // what joined within the step (springs that joined a touching arc as it widened did so, on
+  // average, halfway through it; the trapezoidal rule on K_s(t)).
+  T stretch_stiffness = shear_stiffness;
+  if (model.whole_step_terms & kSpringSinceTouch) {
+    const T joined = select(had, lane::max(shear_stiffness - state.stiffness, zero), zero);
+    stretch_stiffness = shear_stiffness - broadcast<T>(0.5) * joined;
+  }
+  const T trial_x = state.shear_x * kept - stretch_stiffness * slip_x * stretch_time;
+  const T trial_z = state.shear_z * kept - stretch_stiffness * slip_z * stretch_time;
   const T trial_squared = trial_x * trial_x + trial_z * trial_z;
   const T dashpot_x = -p.damping_beta * shear_stiffness * velocity.shear_dashpot_x;
   const T dashpot_z = -p.damping_beta * shear_stiffness * velocity.shear_dashpot_z;

@@ -12,7 +12,12 @@
 //    order and twenty times larger at f_s = 0.02: what the rule removes;
 //  - where the contact slips throughout (mu = 0.3) the cap sets the force and the rule changes
 //    nothing;
-// and the same for the 3D cask's base (its rim and centre).
+// and the same for the 3D cask's base (its rim and centre). Landing tilted by 0.01 rad, the 3D
+// cask first touches on a point of its rim, and the touching arc then widens through the impact:
+// the springs that join it within a step take half the step's slip (the trapezoidal rule on the
+// arc's stiffness), and the bias falls with the step at order 1.6 (the arc's stiffness grows like
+// the square root of the overlap near the touch, which the trapezoid follows less closely); without
+// the rule, first order.
 #include <cmath>
 #include <cstdint>
 #include <string>
@@ -63,8 +68,9 @@ double planar_spin(double safety_factor, std::int32_t slider, double friction, d
   return (rotation[n - 1] - rotation[n - 2]) / (time[n - 1] - time[n - 2]);
 }
 
-// The 3D cask's angular momentum about the axis across its slide, likewise.
-double cylinder_spin(double safety_factor, std::int32_t slider, double friction, double height) {
+// The 3D cask's angular momentum about the axis across its slide, likewise, landing level or
+// tilted (towards +x, on its rim).
+double cylinder_spin_tilted(double safety_factor, std::int32_t slider, double friction, double height, double tilt) {
   const Case c = landing_cask(safety_factor, slider, friction);
   const CaskSpec3D spec{0.5 * c.cask.cylinder.diameter, c.cask.cylinder.height, c.model.section.rounding,
                         c.parameters.mass};
@@ -72,12 +78,21 @@ double cylinder_spin(double safety_factor, std::int32_t slider, double friction,
   Model3D model = build_model3d(c.model, spec, p);
   const LaneParameters<double> lane = lane_parameters3d(model, p);
   model.model.gravity = 0.0;
-  BodyState3D<double> body = rest_state3d(model, lane);
-  body.y = lane.centre_y + height * kSpeed * model.model.time_step;
+  BodyState3D<double> body = tilt > 0.0 ? tilted_state3d(model, lane, tilt, 0.0) : rest_state3d(model, lane);
+  if (tilt == 0.0) body.y = lane.centre_y;
+  body.y += height * kSpeed * model.model.time_step;
   body.vx = kSpeed;
   body.vy = -kSpeed;
   testing::FunctionMotion still([](double) { return 0.0; }, 0.0);
   return simulate3d(model, lane, body, {&still}, {0.03, 0.0}).final_state.pi_z;
+}
+
+double cylinder_spin(double safety_factor, std::int32_t slider, double friction, double height) {
+  return cylinder_spin_tilted(safety_factor, slider, friction, height, 0.0);
+}
+
+double cylinder_spin_on_rim(double safety_factor, std::int32_t slider, double friction, double height) {
+  return cylinder_spin_tilted(safety_factor, slider, friction, height, 0.01);
 }
 
 using Spin = double (*)(double, std::int32_t, double, double);
@@ -112,7 +127,7 @@ Convergence convergence(Spin spin, std::int32_t slider, double friction, double 
   return c;
 }
 
-void expect_touch_rule_converges(Spin spin, const std::string& cask) {
+void expect_touch_rule_converges(Spin spin, const std::string& cask, double least_order = 1.8) {
   const double reference = mean_spin(spin, kFinest, kWholeStepSlider, 10.0);
   ASSERT_GT(std::abs(reference), 0.0);
   const Convergence whole = convergence(spin, kWholeStepSlider, 10.0, reference);
@@ -123,11 +138,12 @@ void expect_touch_rule_converges(Spin spin, const std::string& cask) {
   ::testing::Test::RecordProperty(cask + " order half-step", std::to_string(paper.order));
   ::testing::Test::RecordProperty(cask + " bias at f_s 0.02 whole-step", std::to_string(whole.bias[1]));
   ::testing::Test::RecordProperty(cask + " bias at f_s 0.02 half-step", std::to_string(paper.bias[1]));
-  EXPECT_GE(whole.order, 1.8) << cask;
+  EXPECT_GE(whole.order, least_order) << cask;
   EXPECT_LE(velocities.order, 1.2) << cask;
   EXPECT_LE(paper.order, 1.2) << cask;
-  EXPECT_GT(std::abs(paper.bias[1]), 10.0 * std::abs(whole.bias[1])) << cask;
-  EXPECT_GT(std::abs(velocities.bias[1]), 10.0 * std::abs(whole.bias[1])) << cask;
+  const double gain = least_order >= 1.8 ? 10.0 : 4.0;  // at f_s = 0.02
+  EXPECT_GT(std::abs(paper.bias[1]), gain * std::abs(whole.bias[1])) << cask;
+  EXPECT_GT(std::abs(velocities.bias[1]), gain * std::abs(whole.bias[1])) << cask;
 }
 
 TEST(SpringAtTouch, StickingLandingsBiasIsSecondOrderWithTheRule) {
@@ -136,6 +152,10 @@ TEST(SpringAtTouch, StickingLandingsBiasIsSecondOrderWithTheRule) {
 
 TEST(SpringAtTouch, CylinderBaseLandsAsThePlanarCaskDoes) {
   expect_touch_rule_converges(cylinder_spin, "3D");
+}
+
+TEST(SpringAtTouch, CylinderLandingOnItsRimAsTheArcWidens) {
+  expect_touch_rule_converges(cylinder_spin_on_rim, "3D on its rim", 1.5);
 }
 
 TEST(SpringAtTouch, ChangesNothingWhereTheContactSlipsThroughout) {
