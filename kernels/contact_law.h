@@ -174,12 +174,7 @@ CASKDEM_HOST_DEVICE inline CornerContact<T> corner_contact(const Model& model, c
   // K_s times the spring's stretch: the force itself under the linear law, which the Hertz law
   // multiplies by Mindlin's factor of the present overlap (the law is the model's: a uniform branch).
   const bool hertz = model.normal_law == NormalLaw::hunt_crossley;
-  // How long the spring stretched in this step: dt, or under the whole-step slider the time
-  // since a touch within it (kernels/slider.h; a model-wide choice: a uniform branch).
-  T stretch_time = broadcast<T>(model.time_step);
-  if (model.whole_step_terms & kSpringSinceTouch) {
-    stretch_time = stretch_time * slip_since_touch(lane::max(-gap, zero), velocity.spring.normal, model.time_step);
-  }
+  const T stretch_time = spring_stretch_time(model, lane::max(-gap, zero), velocity.spring.normal);
   const T stretch = previous.shear_spring - shear_stiffness * velocity.spring.slip_x * stretch_time;
   T trial = stretch, sticking_stiffness = shear_stiffness, mindlin = zero;
   if (hertz) {

@@ -83,8 +83,20 @@ CASKDEM_HOST_DEVICE inline T slip_since_touch(const T& overlap, const T& normal_
   const T one = broadcast<T>(1.0);
   const T approach = lane::max(-normal_velocity, broadcast<T>(0.0)) * broadcast<T>(time_step);
   const auto opened = overlap < approach;  // false wherever the contact does not approach
+  // Most steps no lane touches: the division only where some lane may (1 either way elsewhere).
+  if (!lane::any(opened)) return one;
   // Both sides computed, blended per lane: the division only where it is taken (approach > 0).
   return select(opened, overlap / select(opened, approach, one), one);
+}
+
+// How long a contact's shear spring stretched in this step: dt, or under the whole-step slider
+// the time since a touch within it (a model-wide choice: a uniform branch). The planar corners
+// (kernels/contact_law.h) and the 3D rim and centre (kernels/step3d.h) read it alike.
+template <class T>
+CASKDEM_HOST_DEVICE inline T spring_stretch_time(const Model& model, const T& overlap, const T& normal_velocity) {
+  const T dt = lane::broadcast<T>(model.time_step);
+  if (!(model.whole_step_terms & kSpringSinceTouch)) return dt;
+  return dt * slip_since_touch(overlap, normal_velocity, model.time_step);
 }
 
 // v(n-1/2) + kick / 2: the whole-step value of a half-step velocity from its last change.

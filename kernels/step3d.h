@@ -109,12 +109,7 @@ CASKDEM_HOST_DEVICE CASKDEM_ALWAYS_INLINE Vector3<T> shear_contact(const Model& 
   using lane::broadcast;
   using lane::select;
   const T zero = broadcast<T>(0.0), one = broadcast<T>(1.0);
-  // How long the spring stretched in this step: dt, or under the whole-step slider the time
-  // since a touch within it (a model-wide choice: a uniform branch).
-  T stretch_time = broadcast<T>(model.time_step);
-  if (model.whole_step_terms & kSpringSinceTouch) {
-    stretch_time = stretch_time * slip_since_touch(overlap, velocity.spring.normal, model.time_step);
-  }
+  const T stretch_time = spring_stretch_time(model, overlap, velocity.spring.normal);
   const T& slip_x = velocity.spring.slip_x;
   const T& slip_z = velocity.spring.slip_z;
   // Taken only where the friction law is evaluated (friction_limit).
@@ -234,6 +229,7 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   // (F_+ - F_-) sin psi to the sums along and across theta_0. A pair's two nodes differ only in
   // the sign of Q: shaken in its plane (Q = 0) they push alike and the sum across stays 0 exactly.
   const RimTouch<T> rim = rim_touch(contacts, p, rotation, body.y);
+  const T lowest_gap = rim.centre_gap - rim.amplitude;  // the ring's lowest point
   const Vector3<T> ring_arm = rotation.apply({-p.centre_x, radius - p.centre_y, zero});
   const bool normal_whole = whole_step_terms & kWholeStepNormalDashpot;
   const Vector3<T>& normal_omega = normal_whole ? omega_n : omega;  // the normal dashpot's (kernels/slider.h)
@@ -271,7 +267,7 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
   const SliderVelocities<T> rim_velocity = contact_velocities(rim_lever);
   const Vector3<T> rim_friction =
       shear_contact<Law>(model, p, rim_touching, active, rim_normal, rim_shear_stiffness,
-                         lane::max(rim.amplitude - rim.centre_gap, zero), rim_velocity, points[0]);
+                         lane::max(-lowest_gap, zero), rim_velocity, points[0]);
   // The normal forces' moment: sum l_j x (0, F_n,j, 0) = (sum F_n,j l_j) x e_y.
   const Vector3<T> rim_moment = cross(rim_lever, rim_friction);
   Vector3<T> force{rim_friction.x, rim_normal, rim_friction.z};
@@ -299,8 +295,7 @@ CASKDEM_HOST_DEVICE inline void step3d(const Model& model, const Contacts3D& con
     const Vector3<T> moment = cross(lever, contact);
     torque = {torque.x + moment.x, torque.y + moment.y, torque.z + moment.z};
   }
-  // The lowest and highest points of the ring (the centre lies between them).
-  const T lowest_gap = rim.centre_gap - rim.amplitude;
+  // The highest point of the ring (the centre lies between it and the lowest).
   response.max_uplift = lane::max(rim.centre_gap + rim.amplitude, response.max_uplift);
 
   // ---- observe the state at t_n ----------------------------------------------------------
