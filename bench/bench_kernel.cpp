@@ -132,6 +132,20 @@ void normal_law(benchmark::State& state, InstructionSet isa, NormalLaw law) {
   state.counters["lane_steps_per_s"] = benchmark::Counter(double(kLanes) * kSteps * state.iterations(), benchmark::Counter::kIsRate);
 }
 
+// The whole-step slider (an ensemble's default; kernels/slider.h) against the paper's half-step
+// one on the same work: what its whole-step velocities and its spring at a touch cost.
+void slider(benchmark::State& state, InstructionSet isa, std::int32_t whole_step_terms) {
+  if (!instruction_set_available(isa)) {
+    state.SkipWithError((instruction_set_name(isa) + " is not available on this machine").c_str());
+    return;
+  }
+  Case c = paper_model(FrictionLaw::exponential);
+  c.model.whole_step_terms = whole_step_terms;
+  const Model model = build_model(c.model, c.parameters);
+  advance_blocks(state, isa, model, c.parameters);
+  state.counters["lane_steps_per_s"] = benchmark::Counter(double(kLanes) * kSteps * state.iterations(), benchmark::Counter::kIsRate);
+}
+
 // The scalar deterministic code (the reference path, with its time-history bookkeeping off)
 // on the same work: one realisation after another.
 void deterministic(benchmark::State& state, FrictionLaw law) {
@@ -190,6 +204,14 @@ BENCHMARK_CAPTURE(normal_law, avx2_linear, InstructionSet::avx2, NormalLaw::line
 BENCHMARK_CAPTURE(normal_law, avx2_hunt_crossley, InstructionSet::avx2, NormalLaw::hunt_crossley)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(normal_law, avx512f_linear, InstructionSet::avx512f, NormalLaw::linear)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(normal_law, avx512f_hunt_crossley, InstructionSet::avx512f, NormalLaw::hunt_crossley)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider, scalar_half_step, InstructionSet::scalar, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider, scalar_whole_step, InstructionSet::scalar, kWholeStepSlider)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider, sse2_half_step, InstructionSet::sse2, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider, sse2_whole_step, InstructionSet::sse2, kWholeStepSlider)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider, avx2_half_step, InstructionSet::avx2, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider, avx2_whole_step, InstructionSet::avx2, kWholeStepSlider)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider, avx512f_half_step, InstructionSet::avx512f, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider, avx512f_whole_step, InstructionSet::avx512f, kWholeStepSlider)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(deterministic, exponential, FrictionLaw::exponential)->Unit(benchmark::kMillisecond);
 BENCHMARK(threads)->Threads(1)->Threads(2)->UseRealTime()->Unit(benchmark::kMillisecond);
 

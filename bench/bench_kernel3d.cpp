@@ -27,9 +27,10 @@ struct Cask3D {
   RealisationParameters nominal;
 };
 
-Cask3D paper_cask3d(NormalLaw law = NormalLaw::linear) {
+Cask3D paper_cask3d(NormalLaw law = NormalLaw::linear, std::int32_t whole_step_terms = 0) {
   Case c = paper_model(FrictionLaw::exponential);
   c.model.normal_law = law;
+  c.model.whole_step_terms = whole_step_terms;
   if (law == NormalLaw::hunt_crossley) c.parameters.impact_damping = 2.0;  // s/m
   const CaskSpec3D spec{0.5 * c.cask.cylinder.diameter, c.cask.cylinder.height, c.model.section.rounding, c.parameters.mass};
   const RealisationParameters nominal = nominal_parameters3d(spec, c.parameters);
@@ -128,6 +129,18 @@ void normal_law3d(benchmark::State& state, InstructionSet isa, NormalLaw law) {
   state.counters["lane_steps_per_s"] = benchmark::Counter(double(kLanes) * kSteps * state.iterations(), benchmark::Counter::kIsRate);
 }
 
+// The whole-step slider (an ensemble's default; kernels/slider.h) against the paper's half-step
+// one on the same work: what its whole-step velocities and its spring at a touch cost.
+void slider3d(benchmark::State& state, InstructionSet isa, std::int32_t whole_step_terms) {
+  if (!instruction_set_available(isa)) {
+    state.SkipWithError((instruction_set_name(isa) + " is not available on this machine").c_str());
+    return;
+  }
+  const Cask3D cask = paper_cask3d(NormalLaw::linear, whole_step_terms);
+  advance_blocks3d(state, isa, cask);
+  state.counters["lane_steps_per_s"] = benchmark::Counter(double(kLanes) * kSteps * state.iterations(), benchmark::Counter::kIsRate);
+}
+
 // The planar kernel on the same cask (two corners) and table, for the ratio.
 void kernel2d(benchmark::State& state, InstructionSet isa) {
   if (!instruction_set_available(isa)) {
@@ -157,6 +170,14 @@ BENCHMARK_CAPTURE(normal_law3d, avx2_linear, InstructionSet::avx2, NormalLaw::li
 BENCHMARK_CAPTURE(normal_law3d, avx2_hunt_crossley, InstructionSet::avx2, NormalLaw::hunt_crossley)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(normal_law3d, avx512f_linear, InstructionSet::avx512f, NormalLaw::linear)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(normal_law3d, avx512f_hunt_crossley, InstructionSet::avx512f, NormalLaw::hunt_crossley)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider3d, scalar_half_step, InstructionSet::scalar, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider3d, scalar_whole_step, InstructionSet::scalar, kWholeStepSlider)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider3d, sse2_half_step, InstructionSet::sse2, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider3d, sse2_whole_step, InstructionSet::sse2, kWholeStepSlider)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider3d, avx2_half_step, InstructionSet::avx2, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider3d, avx2_whole_step, InstructionSet::avx2, kWholeStepSlider)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider3d, avx512f_half_step, InstructionSet::avx512f, 0)->Unit(benchmark::kMillisecond);
+BENCHMARK_CAPTURE(slider3d, avx512f_whole_step, InstructionSet::avx512f, kWholeStepSlider)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(kernel2d, avx2, InstructionSet::avx2)->Unit(benchmark::kMillisecond);
 BENCHMARK_CAPTURE(kernel2d, avx512f, InstructionSet::avx512f)->Unit(benchmark::kMillisecond);
 
