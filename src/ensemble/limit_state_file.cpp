@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/error.h"
+#include "model/build.h"
 
 namespace caskdem {
 
@@ -193,6 +194,9 @@ std::vector<std::filesystem::path> write_fragility_tables(const std::filesystem:
   nlohmann::json report;
   report["result_file"] = result_file.string();
   report["title"] = spec.title;
+  // The step the curves were computed at, so that a table read apart from its result file says it.
+  report["time_step_s"] = plan.model().time_step;
+  report["slider"] = slider_name_of(plan.model().whole_step_terms);
   report["intensity"] = {{"measure", intensity_name(spec.measure)},
                          {"unit", unit},
                          {"model_scale", scale},
