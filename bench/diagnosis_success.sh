@@ -21,6 +21,8 @@
 # cause); SECOND_EFFECT= (empty) runs it. The proposed tests (plan-test) are skipped too: they
 # do not change the cause either.
 #
+# DIAGNOSE_OPTIONS="..." adds options to each diagnose (such as --refit-from-profile).
+#
 # KEEP=DIR copies each set's diagnosis.json and truth.json to DIR/EFFECT-SEED-*.json, so that
 # decision rules (thresholds, the held-out tolerance rule) can be compared on the same fits
 # afterwards (bench/decision_rules.py) without diagnosing again.
@@ -46,7 +48,7 @@ diagnose_set() {
   dir=$1 effect=$2 seed=$3
   # The generator's specimen.toml ends with its [diagnosis] table.
   [ "$inputs" = 1 ] || echo "input_realisations = $inputs" >>"$dir/specimen.toml"
-  "$caskdem" diagnose "$dir" --out "$dir/diagnosis" --quiet --no-plot --uncertainty "$uncertainty" --no-plan ${SECOND_EFFECT:---no-second-effect} >/dev/null
+  "$caskdem" diagnose "$dir" --out "$dir/diagnosis" --quiet --no-plot --uncertainty "$uncertainty" --no-plan ${SECOND_EFFECT:---no-second-effect} ${DIAGNOSE_OPTIONS:-} >/dev/null
   /usr/bin/python3 - "$dir/diagnosis/diagnosis.json" "$effect" "$seed" >>"$out" <<'PY'
 import json, sys
 d = json.load(open(sys.argv[1]))

@@ -129,6 +129,7 @@ void add_diagnose(CLI::App& app) {
       std::string directory, out, start_from;
       int threads = 0;
       bool quiet = false, no_plot = false, no_second_effect = false, no_plan = false, normal_laws = false;
+      bool refit_from_profile = false;
       std::string uncertainty = "jackknife";
     };
     auto options = std::make_shared<Options>();
@@ -144,6 +145,9 @@ void add_diagnose(CLI::App& app) {
     cmd->add_flag("--normal-laws", options->normal_laws,
                   "Also calibrate on the other normal law (linear, Hunt-Crossley) and keep the one the held-out tests "
                   "prefer (twice the calibrations)");
+    cmd->add_flag("--refit-from-profile", options->refit_from_profile,
+                  "Search a mechanism's fit again from its profile's minimum where that is lower than the fit by more "
+                  "than the profile's bound (chi2_1 at 95 %)");
     cmd->add_flag("--no-second-effect", options->no_second_effect,
                   "Do not fit the other mechanisms on top of the cause (faster; the cause is the same)");
     add_uncertainty_option(cmd, options->uncertainty, ", for the baseline and the cause");
@@ -158,6 +162,7 @@ void add_diagnose(CLI::App& app) {
       prepare_output_directory(out);
       run_options.look_for_second_effect = !options->no_second_effect;
       run_options.compare_normal_laws = options->normal_laws;
+      run_options.refit_from_profile = options->refit_from_profile;
       const diagnosis::Diagnosis d = diagnosis::diagnose(set, run_options);
       std::optional<diagnosis::TestPlan> plan;
       if (!options->no_plan)

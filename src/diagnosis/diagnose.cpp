@@ -386,9 +386,8 @@ SecondEffectSearch search_second_effect(const MeasuredSet& set, const Yardstick&
 // Each mechanism's profile (profile.h) from the baseline as refined, after every fit. The
 // profile's off point is the baseline searched again; where that fits better, the baseline is
 // refitted from the off points, as from the candidates' (a mechanism must not gain by a better
-// fit of the baseline alone). With refit_from_profile, a fit that missed its mechanism (at its
-// off value, or no better than the baseline) while the profile's minimum is below the
-// baseline's J by the profile's bound is repeated from that minimum.
+// fit of the baseline alone). With refit_from_profile, a fit that ended above its profile's
+// minimum by more than the profile's bound is repeated from that minimum.
 void profile_candidates(const MeasuredSet& set, const Yardstick& yardstick, Diagnosis& d,
                         const DiagnosisOptions& options) {
   const ModelVariant baseline_variant(set.specimen, {}, set.vertical_measured);
@@ -424,17 +423,13 @@ void profile_candidates(const MeasuredSet& set, const Yardstick& yardstick, Diag
   for (CandidateScore& c : d.ranking) {
     if (!options.refit_from_profile) break;
     const ProfilePoint& lowest = c.profile->grid[c.profile->minimum];
-    // Only a fit that missed the mechanism (its switch at the off value, or no better than the
-    // baseline) where the profile finds it lowering J below the baseline's by the profile's own
-    // bound (the data's support for it, chi2_1 at 95 %). A fit that found the mechanism keeps
-    // its basin: a lower training J elsewhere is not a better prediction (velocity-dependent
-    // friction of seed 101 on caskdem's generator: refitted from its profile's minimum, BIC -35
-    // against -20 but a held-out gain of 0.03 against 0.42; tests/diagnosis/test_hidden_effects.cpp).
-    const bool missed = c.model.fit.objective >= d.baseline.fit.objective || at_off_value(set, c.mechanism, c.model);
-    if (!missed || lowest.objective >= c.model.fit.objective ||
-        lowest.objective >= d.baseline.fit.objective - kProfileBound) {
-      continue;
-    }
+    // Only where the profile found the fit's search short of its minimum by more than the
+    // profile's own bound (chi2_1 at 95 %). Off by default: a lower training J is not always a
+    // better prediction (velocity-dependent friction of seed 101 on caskdem's generator: refitted
+    // from its profile's minimum, BIC -35 against -20 but a held-out gain of 0.03 against 0.42;
+    // tests/diagnosis/test_hidden_effects.cpp), and the rates with it are those measured in
+    // docs/diagnosis-accuracy.md.
+    if (lowest.objective >= c.model.fit.objective - kProfileBound) continue;
     const ModelVariant variant(set.specimen, {c.mechanism}, set.vertical_measured);
     say(options, "refitting " + variant.name() + " from its profile's minimum (J " + std::to_string(lowest.objective) +
                      " against its fit's " + std::to_string(c.model.fit.objective) + ")");

@@ -82,10 +82,9 @@ struct DiagnosisOptions {
   // points' searches take half the [diagnosis] evaluations each (at least 10).
   bool profile = true;
   ProfileOptions profile_options;
-  // A fit that missed its mechanism is repeated from its profile's minimum where that is below
-  // the baseline's J by the profile's bound. Off by default: on the independent generator's
-  // null and friction sets (seeds 2001 to 2010) it named no effect more and one wrong mechanism
-  // more (docs/diagnosis-accuracy.md, "The second round").
+  // A fit is searched again from its profile's minimum where that is below the fit's J by more
+  // than the profile's bound (diagnose --refit-from-profile). Off by default: what it does to
+  // the rates is measured in docs/diagnosis-accuracy.md ("The second round").
   bool refit_from_profile = false;
   // An earlier diagnosis of this cask (earlier_fits.h): each of its fits joins the starts of the
   // fit of the same model and form here.
