@@ -28,8 +28,7 @@ struct LaneParameters {
   T floor_soft_ratio;      // s: a floor layer of stiffness s K over the first floor_soft_depth of overlap
   T floor_soft_depth;      // d0, m
   T base_camber;           // c, m: the base-centre corner (Model::camber_corner) sits c below the base corners
-  T wobble_damping;        // zeta_w: rocking damper -2 zeta_w p ((1 - g) + g |theta|/alpha) omega, out-of-plane losses
-  T wobble_growth;         // g in [0, 1]: the share of zeta_w that grows with the amplitude (1: zero when it stands)
+  T wobble_damping;        // zeta_w: rocking damper -2 zeta_w p (|theta|/alpha) omega, out-of-plane losses
   // The 3D cask (kernels/step3d.h) also turns about its own axis: inverse_inertia is then about
   // the horizontal axes through the centre of mass, this about the cask's axis (0 in 2D).
   T inverse_axial_inertia;  // 1/(kg m^2)
@@ -39,9 +38,9 @@ struct LaneParameters {
     f(inverse_mass); f(inverse_inertia); f(centre_x); f(centre_y); f(friction_static); f(friction_kinetic);
     f(inverse_decay_speed); f(damping_beta); f(horizontal_scale); f(vertical_scale); f(stiffness_scale);
     f(impact_damping); f(floor_soft_ratio); f(floor_soft_depth); f(base_camber); f(wobble_damping);
-    f(wobble_growth); f(inverse_axial_inertia);
+    f(inverse_axial_inertia);
   }
-  static constexpr int field_count = 18;
+  static constexpr int field_count = 17;
 };
 
 // Rigid-body state in the floor frame. Central differences keep positions at whole steps

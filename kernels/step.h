@@ -138,15 +138,11 @@ CASKDEM_HOST_DEVICE inline void step(const Model& model, const LaneParameters<T>
   // ---- advance to t_{n+1} (stopped lanes keep their state) --------------------------------
   const T accel_x = force_x * p.inverse_mass - p.horizontal_scale * table_horizontal;
   const T accel_y = force_y * p.inverse_mass - (broadcast<T>(model.gravity) + p.vertical_scale * table_vertical);
-  // Out-of-plane losses (wobbling, top-spinning of a real cylinder, air) as a damping couple
-  // -I 2 zeta_w p ((1 - g) + g |theta| / alpha) omega: a viscous rocking damper (g = 0, the
-  // usual one of rocking studies) or one whose ratio grows with the amplitude (g = 1: zeta_w
-  // at |theta| = alpha, zero when it stands), or a blend. Written over alpha so that g = 1
-  // gives (1 - g) alpha + g |theta| = |theta| to the bit.
-  const T wobble_arm = (broadcast<T>(1.0) - p.wobble_growth) * broadcast<T>(model.stability_angle) +
-                       p.wobble_growth * lane::abs(body.theta);
+  // Out-of-plane losses (wobbling, top-spinning of a real cylinder) as a damping couple
+  // -I 2 zeta_w p (|theta| / alpha) omega whose ratio grows with the amplitude: zeta_w at
+  // |theta| = alpha, zero when it stands.
   const T wobble = broadcast<T>(2.0 * model.rocking_frequency / model.stability_angle) * p.wobble_damping *
-                   wobble_arm * body.omega;
+                   lane::abs(body.theta) * body.omega;
   const T accel_theta = moment * p.inverse_inertia - wobble;
   const T kick_vx = accel_x * dt, kick_vy = accel_y * dt, kick_omega = accel_theta * dt;
   const T vx = body.vx + kick_vx;

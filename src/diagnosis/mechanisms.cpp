@@ -112,8 +112,6 @@ ModelVariant::ModelVariant(const Case& specimen, std::vector<Mechanism> mechanis
         break;
       case Mechanism::out_of_plane_loss:
         parameters_.push_back({"wobble_damping", "", 0.0, 0.5, false, 0.0});
-        // Its shape: 0 a viscous rocking damper, 1 one that grows with the amplitude.
-        parameters_.push_back({"wobble_growth", "", 0.0, 1.0, false, 1.0, true, false});
         break;
       case Mechanism::sensor_delay:
         parameters_.push_back({"sensor_delay", "s", -0.1, 0.1, false, 0.0});
@@ -167,10 +165,7 @@ RealisationParameters ModelVariant::realisation(const std::vector<double>& x) co
     p.floor_soft_ratio = value("floor_soft_ratio");
     p.floor_soft_depth = value("floor_soft_depth");
   }
-  if (has(Mechanism::out_of_plane_loss)) {
-    p.wobble_damping = value("wobble_damping");
-    p.wobble_growth = value("wobble_growth");
-  }
+  if (has(Mechanism::out_of_plane_loss)) p.wobble_damping = value("wobble_damping");
   return p;
 }
 

@@ -11,8 +11,7 @@
 //   vertical_excitation             vertical table acceleration (measured channel, or g_v times the
 //                                   horizontal one when none was measured) acting, with gain g
 //   floor_compliance                a soft floor layer: stiffness s K over the first d0 of overlap
-//   out_of_plane_loss               rocking damper 2 zeta_w p ((1 - g) + g |theta|/alpha) omega (wobbling,
-//                                   top-spinning, air): viscous (g = 0) to growing with the amplitude (g = 1)
+//   out_of_plane_loss               rocking damper 2 zeta_w p (|theta|/alpha) omega (wobbling, top-spinning)
 //   sensor_delay                    the response channels lag the table channel by tau
 //
 // The baseline model fits the friction coefficient mu (constant law), the damping ratio h

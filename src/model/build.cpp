@@ -279,16 +279,12 @@ LaneParameters<double> lane_parameters(const Model& model, const RealisationPara
     throw std::invalid_argument("a base camber needs a model with a base-centre contact");
   }
   if (!(p.wobble_damping >= 0.0)) throw std::invalid_argument("the wobble damping must be non-negative");
-  if (!(p.wobble_growth >= 0.0 && p.wobble_growth <= 1.0)) {
-    throw std::invalid_argument("the wobble damping's growing share must lie in [0, 1]");
-  }
   lane.impact_damping = p.impact_damping + hunt_crossley_damper(model, lane.damping_beta,
                                                                  total_standing_normal_stiffness(model) * p.stiffness_scale, p.mass);
   lane.floor_soft_ratio = p.floor_soft_ratio;
   lane.floor_soft_depth = p.floor_soft_depth;
   lane.base_camber = p.base_camber;
   lane.wobble_damping = p.wobble_damping;
-  lane.wobble_growth = p.wobble_growth;
   if (!(p.axial_inertia >= 0.0)) throw std::invalid_argument("the axial inertia must be non-negative");
   lane.inverse_axial_inertia = p.axial_inertia > 0.0 ? 1.0 / p.axial_inertia : 0.0;
   return lane;

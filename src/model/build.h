@@ -82,7 +82,6 @@ struct RealisationParameters {
   double floor_soft_depth = 0.0; // m
   double base_camber = 0.0;      // m
   double wobble_damping = 0.0;
-  double wobble_growth = 1.0;    // share of wobble_damping that grows with |theta|/alpha, [0, 1]
 };
 
 RealisationParameters nominal_parameters(const ModelSpec& spec);  // mass properties from the section
