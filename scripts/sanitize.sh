@@ -27,7 +27,7 @@ repeats=$(
     'Cask3D\.AnEccentricCentreOfMassRocksFirstTowardsItsSide'
     'Cask3DLanes\.BlocksGiveTheDeterministicRunsBitsOnEveryInstructionSet'
     'Ensemble3D\.EveryLaneEqualsTheDeterministicRun'
-    'Ensemble3D\.PaperSchemeSameBitsOnEveryInstructionSet'
+    'Ensemble3D\.PaperSchemeSameBitsOnEveryInstructionSetThreadCountBlockSizeAndSchedule'
     'Reproducibility\.RefilledLanesGiveTheLockstepBits'
     'ReproducibilityDistributed\.SameBitsOnEveryInstructionSet'
     'Resume\.Killed3DRunResumesToTheUninterruptedResult'

@@ -116,9 +116,9 @@ TEST(Ensemble3D, SameBitsOnEveryInstructionSetThreadCountBlockSizeAndSchedule) {
 }
 
 // The source paper's half-step slider in 3D (an ensemble's default, the whole-step slider, is
-// the test above's): the scalar lanes' bits on every instruction set, and not the whole-step
-// slider's.
-TEST(Ensemble3D, PaperSchemeSameBitsOnEveryInstructionSet) {
+// the test above's): the scalar lanes' bits on every instruction set, thread count, block size
+// and schedule (refilled or in lockstep), and not the whole-step slider's.
+TEST(Ensemble3D, PaperSchemeSameBitsOnEveryInstructionSetThreadCountBlockSizeAndSchedule) {
   EnsembleSpec spec = load_ensemble(kEnsemble);
   ASSERT_EQ(spec.base.model.whole_step_terms, kWholeStepSlider) << "an ensemble's default";
   spec.base.model.whole_step_terms = 0;
@@ -130,7 +130,10 @@ TEST(Ensemble3D, PaperSchemeSameBitsOnEveryInstructionSet) {
   EXPECT_FALSE(same_bits(bits_of(run(whole_step, some, 16, InstructionSet::scalar, 1)), reference));
   for (InstructionSet isa : {InstructionSet::sse2, InstructionSet::avx2, InstructionSet::avx512f}) {
     if (!instruction_set_available(isa)) continue;
-    EXPECT_TRUE(same_bits(bits_of(run(plan, some, 8, isa, 2, true)), reference)) << instruction_set_name(isa);
+    for (int lanes : {8, 24}) {
+      EXPECT_TRUE(same_bits(bits_of(run(plan, some, lanes, isa, 2, true)), reference)) << instruction_set_name(isa) << ", " << lanes;
+      EXPECT_TRUE(same_bits(bits_of(run(plan, some, lanes, isa, 1, false)), reference)) << instruction_set_name(isa) << ", " << lanes;
+    }
   }
 }
 

@@ -68,12 +68,12 @@ FreeRocking release(const Case& c, double tilt_ratio, double duration) {
 }
 
 TEST(FreeRocking, QuarterPeriodFollowsHousner) {
-  for (std::int32_t slider : testing::kBothSliders) {
+  for (const testing::Scheme& scheme : testing::kSchemes) {
     Case c = stiff_lightly_damped();
-    c.model.whole_step_terms = slider;
+    scheme.apply(c);
     const testing::Prepared p = testing::prepare(c);
     const theory::RigidBlock block = rigid_equivalent(p.model, c.parameters);
-    const std::string name = slider_name_of(slider);
+    const std::string name = scheme.name();
     for (double ratio : {0.3, 0.5, 0.7, 0.9}) {
       const double expected = theory::free_rocking_period_linearised(block, ratio * block.slenderness());
       const FreeRocking r = release(c, ratio, 0.5 * expected);
@@ -88,10 +88,10 @@ TEST(FreeRocking, QuarterPeriodFollowsHousner) {
 }
 
 TEST(FreeRocking, AmplitudeDecayFollowsTheExactRelationForItsOwnRestitution) {
-  for (std::int32_t slider : testing::kBothSliders) {
+  for (const testing::Scheme& scheme : testing::kSchemes) {
     Case c = stiff_lightly_damped();
-    c.model.whole_step_terms = slider;
-    const std::string name = slider_name_of(slider);
+    scheme.apply(c);
+    const std::string name = scheme.name();
     const testing::Prepared p = testing::prepare(c);
     const theory::RigidBlock block = rigid_equivalent(p.model, c.parameters);
     const FreeRocking r = release(c, 0.7, 8.0);

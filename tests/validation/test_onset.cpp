@@ -35,9 +35,9 @@ Onset ramp_until(const Case& c, double duration, Predicate happened) {
 }
 
 TEST(Onset, RockingStartsAtGTanAlpha) {
-  for (std::int32_t slider : testing::kBothSliders) {
+  for (const testing::Scheme& scheme : testing::kSchemes) {
     Case c = testing::one_third_model();
-    c.model.whole_step_terms = slider;
+    scheme.apply(c);
     c.model.friction_law = FrictionLaw::constant;
     c.parameters.friction_static = c.parameters.friction_kinetic = 2.0;  // friction holds
     const testing::Prepared p = testing::prepare(c);
@@ -48,17 +48,17 @@ TEST(Onset, RockingStartsAtGTanAlpha) {
     });
     ASSERT_TRUE(onset.found);
     const double error = onset.acceleration / expected - 1.0;
-    RecordProperty(slider_name_of(slider) + " relative_error", std::to_string(error));
-    EXPECT_LT(std::abs(error), 0.02) << slider_name_of(slider) << ": uplift at " << onset.acceleration
+    RecordProperty(scheme.name() + " relative_error", std::to_string(error));
+    EXPECT_LT(std::abs(error), 0.02) << scheme.name() << ": uplift at " << onset.acceleration
                                      << " m/s^2, g tan(alpha) = " << expected;
   }
 }
 
 TEST(Onset, SlidingStartsAtMuGWhenMuBelowTanAlpha) {
   Case c = testing::one_third_model();
-  for (std::int32_t slider : testing::kBothSliders)
+  for (const testing::Scheme& scheme : testing::kSchemes)
     for (double mu : {0.10, 0.15}) {
-      c.model.whole_step_terms = slider;
+      scheme.apply(c);
       c.model.friction_law = FrictionLaw::constant;
       c.parameters.friction_static = c.parameters.friction_kinetic = mu;
       const testing::Prepared p = testing::prepare(c);
@@ -73,8 +73,8 @@ TEST(Onset, SlidingStartsAtMuGWhenMuBelowTanAlpha) {
       });
       ASSERT_TRUE(onset.found) << "mu = " << mu;
       const double error = onset.acceleration / expected - 1.0;
-      RecordProperty(slider_name_of(slider) + " relative_error_mu_" + std::to_string(mu), std::to_string(error));
-      EXPECT_LT(std::abs(error), 0.02) << slider_name_of(slider) << ", mu = " << mu << ": sliding at "
+      RecordProperty(scheme.name() + " relative_error_mu_" + std::to_string(mu), std::to_string(error));
+      EXPECT_LT(std::abs(error), 0.02) << scheme.name() << ", mu = " << mu << ": sliding at "
                                        << onset.acceleration << " m/s^2";
     }
 }

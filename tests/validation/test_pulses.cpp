@@ -20,10 +20,10 @@ namespace caskdem {
 namespace {
 
 TEST(Pulses, HalfSineOverturningThresholdFollowsTheClosedForm) {
-  for (std::int32_t slider : testing::kBothSliders) {
+  for (const testing::Scheme& scheme : testing::kSchemes) {
     Case c = testing::one_third_model();
-    c.model.whole_step_terms = slider;
-    const std::string name = slider_name_of(slider);
+    scheme.apply(c);
+    const std::string name = scheme.name();
     c.model.stiffness.normal *= 10.0;
     c.model.stiffness.shear *= 10.0;
     c.model.friction_law = FrictionLaw::constant;

@@ -30,10 +30,10 @@ Case wide_block() {
 }
 
 TEST(Sliding, WideBlockFollowsRigidPlasticTwoWaySliding) {
-  for (std::int32_t slider : testing::kBothSliders) {
+  for (const testing::Scheme& scheme : testing::kSchemes) {
     Case c = wide_block();
-    c.model.whole_step_terms = slider;
-    const std::string name = slider_name_of(slider);
+    scheme.apply(c);
+    const std::string name = scheme.name();
     c.model.friction_law = FrictionLaw::constant;
     const double mu = 0.2;
     c.parameters.friction_static = c.parameters.friction_kinetic = mu;
@@ -66,6 +66,54 @@ TEST(Sliding, WideBlockFollowsRigidPlasticTwoWaySliding) {
       EXPECT_LT(std::abs(max_error), 0.02) << name << ", " << amplitude_g << " g: DEM " << run.summary.max_abs_slide
                                            << " m, exact " << exact.max_abs_displacement << " m";
       EXPECT_LT(history_error, 0.02) << name << ", " << amplitude_g << " g";
+      EXPECT_LT(run.summary.max_abs_rotation, 1e-3);  // it slid, it did not rock
+    }
+  }
+}
+
+// The work-energy balance with friction: a block launched at v0 over a still floor (it cannot
+// rock) slides until friction has taken its kinetic energy, m v0^2 / 2 = m g integral mu(v) dx,
+// so it stops after D = (1/g) integral_0^v0 v / mu(v) dv: v0^2 / (2 mu g) for a constant law, and
+// for the exponential law the integral by Simpson's rule on 20,000 intervals (independent of the
+// step). The spring-sliders' stretch at the stop (mu m g / K_s, 4e-8 m here) is far below the
+// tolerance. Every scheme, with each law.
+TEST(Sliding, AFreeSlideStopsWhereFrictionHasTakenItsKineticEnergy) {
+  const double launch = 1.0;  // m/s
+  for (FrictionLaw law : {FrictionLaw::constant, FrictionLaw::exponential}) {
+    for (const testing::Scheme& scheme : testing::kSchemes) {
+      Case c = wide_block();
+      scheme.apply(c);
+      c.model.friction_law = law;
+      c.parameters.friction_static = 0.3;
+      c.parameters.friction_kinetic = law == FrictionLaw::constant ? 0.3 : 0.2;
+      c.parameters.friction_decay_speed = 0.05;
+      const testing::Prepared p = testing::prepare(c);
+      const double g = p.model.gravity;
+      const auto mu = [&](double v) {
+        return c.parameters.friction_kinetic +
+               (c.parameters.friction_static - c.parameters.friction_kinetic) * std::exp(-v / c.parameters.friction_decay_speed);
+      };
+      double distance = 0.0;
+      if (law == FrictionLaw::constant) {
+        distance = launch * launch / (2.0 * c.parameters.friction_static * g);
+      } else {
+        const int n = 20000;
+        const double h = launch / n;
+        for (int k = 0; k <= n; ++k) {
+          const double v = k * h, weight = (k == 0 || k == n) ? 1.0 : (k % 2 ? 4.0 : 2.0);
+          distance += weight * v / mu(v);
+        }
+        distance *= h / (3.0 * g);
+      }
+      BodyState<double> launched = rest_state(p.model, p.lane);
+      launched.vx = launch;
+      testing::FunctionMotion still([](double) { return 0.0; }, 1.0);
+      const RunResult run = simulate(p.model, p.lane, launched, {&still, nullptr}, {1.0, 0.0});
+      const double error = run.summary.residual_slide / distance - 1.0;
+      const std::string name = std::string(law == FrictionLaw::constant ? "constant, " : "exponential, ") + scheme.name();
+      RecordProperty(name + " stop_error", std::to_string(error));
+      EXPECT_LT(std::abs(error), 1e-3) << name << ": stopped after " << run.summary.residual_slide << " m, the energy balance gives "
+                                       << distance << " m";
       EXPECT_LT(run.summary.max_abs_rotation, 1e-3);  // it slid, it did not rock
     }
   }
