@@ -552,6 +552,9 @@ Diagnosis diagnose(const MeasuredSet& given, const DiagnosisOptions& options) {
     d.footprints[withdrawn].gain_when_chosen = gain_when_chosen;
   }
   if (options.earlier) d.started_from = options.earlier->source.string();
+  d.choices = {options.choose_footprint, options.compare_normal_laws, options.profile, options.refit_from_profile,
+               options.look_for_second_effect, options.jackknife, options.minimum_gain, options.maximum_bic_delta,
+               options.minimum_improved_fraction};
   d.wall_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return d;
 }

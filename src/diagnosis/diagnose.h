@@ -191,6 +191,13 @@ struct Diagnosis {
   std::vector<StructureRow> structure;
   // The earlier diagnosis whose fits joined the starts (DiagnosisOptions::earlier); empty: none.
   std::string started_from;
+  // The choices it was made with (DiagnosisOptions), written beside its answer so that a run
+  // can be repeated and read as what it was.
+  struct Choices {
+    bool choose_footprint = true, compare_normal_laws = false, profile = true, refit_from_profile = false;
+    bool look_for_second_effect = true, jackknife = false;
+    double minimum_gain = 0.2, maximum_bic_delta = -10.0, minimum_improved_fraction = 0.5;
+  } choices;
   double wall_seconds = 0.0;
 };
 

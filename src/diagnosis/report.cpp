@@ -290,6 +290,16 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   j["settings"] = settings_json(set.settings);
   // The earlier diagnosis whose fits joined the searches' starts, so that a run can be repeated.
   j["started_from"] = d.started_from.empty() ? nlohmann::json(nullptr) : nlohmann::json(d.started_from);
+  const Diagnosis::Choices& c = d.choices;
+  j["options"] = {{"choose_footprint", c.choose_footprint},
+                  {"compare_normal_laws", c.compare_normal_laws},
+                  {"profile", c.profile},
+                  {"refit_from_profile", c.refit_from_profile},
+                  {"look_for_second_effect", c.look_for_second_effect},
+                  {"jackknife", c.jackknife},
+                  {"minimum_gain", c.minimum_gain},
+                  {"maximum_bic_delta", c.maximum_bic_delta},
+                  {"minimum_improved_fraction", c.minimum_improved_fraction}};
   j["data_issues"] = nlohmann::json::array();
   for (const MeasuredTest& t : set.tests) {
     for (const std::string& issue : t.issues) j["data_issues"].push_back(issue);
@@ -377,6 +387,10 @@ void write_diagnosis(const std::filesystem::path& directory, const MeasuredSet& 
   if (!d.started_from.empty()) {
     md << "Each fit's searches also started from the fit of the same model and footprint in `" << d.started_from
        << "`, an earlier diagnosis of this cask.\n\n";
+  }
+  if (d.choices.refit_from_profile) {
+    md << "A fit whose profile found a training misfit lower by more than the profile's bound was searched again "
+          "from the profile's minimum (`--refit-from-profile`).\n\n";
   }
   md << "## Data\n\n";
   bool any_issue = false;

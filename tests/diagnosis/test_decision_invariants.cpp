@@ -141,6 +141,12 @@ TEST(DecisionInvariants, TheAnswerFollowsItsStatedRules) {
   std::ifstream in(report / "diagnosis.json");
   const nlohmann::json j = nlohmann::json::parse(in);
   EXPECT_EQ(j.at("cause").get<std::string>(), d.cause);
+  // The choices the answer was made with, as the options gave them.
+  EXPECT_EQ(j["options"].at("refit_from_profile").get<bool>(), options.refit_from_profile);
+  EXPECT_EQ(j["options"].at("compare_normal_laws").get<bool>(), options.compare_normal_laws);
+  EXPECT_EQ(j["options"].at("profile").get<bool>(), options.profile);
+  EXPECT_EQ(j["options"].at("minimum_gain").get<double>(), options.minimum_gain);
+  EXPECT_EQ(j["options"].at("maximum_bic_delta").get<double>(), options.maximum_bic_delta);
   ASSERT_EQ(j["baseline"]["adequacy"].at("families").size(), a.families.size());
   for (std::size_t i = 0; i < a.families.size(); ++i) {
     EXPECT_EQ(j["baseline"]["adequacy"]["families"][i].at("misfits").get<bool>(), a.families[i].misfits);
