@@ -6,22 +6,33 @@
 // by sqrt 3, each run for its duration and the file's settle time) scaled to twelve stripes of
 // PGA, 0.2 to 2 g, friction uniform 0.4 to 0.8 (Latin hypercube, caskdem's sampler; MuJoCo runs
 // each of the same realisations with its record, friction and scale factor), PEER_PER_STRIPE
-// realisations a stripe (24: 288 in all). Several records give the curves the record-to-record
-// spread a site's fragility has; under one record the tip-over curve is nearly a step in PGA, and
-// one realisation crossing the threshold moves it by more than a quarter of its band. Two limit states: tip-over and rocking beyond alpha / 2 (each code's own
-// alpha: caskdem's rounded section, MuJoCo's box). Each is fitted with a lognormal (the
-// ensemble's fit, ensemble/fragility.h), its 95 % band from 200 bootstrap replicates that
-// resample each stripe's realisations, the same draws at every step.
+// realisations a stripe (24 by default, 288 in all: a quick look; the committed results use 96,
+// 1,152 in all, where the quarter-band criterion is no longer moved by single realisations).
+// Several records give the curves the record-to-record spread a site's fragility has; under one
+// record the tip-over curve is nearly a step in PGA, and one realisation crossing the threshold
+// moves it by more than a quarter of its band. Two limit states: tip-over and rocking beyond
+// alpha / 2 (each code's own alpha: caskdem's rounded section, MuJoCo's box). Each is fitted
+// with a lognormal (the ensemble's fit, ensemble/fragility.h), its 95 % band from 200 bootstrap
+// replicates (Band, below), the same draws at every step.
 //
 // Convergence: caskdem at f_s 0.0025 .. 0.08 with the source paper's half-step slider and with
-// the whole-step one, MuJoCo at dt 0.125 ms .. 4 ms. A step converges when every finer step's
-// median and beta of both limit states differ from the finest step's by less than a quarter of
-// that answer's band at the finest step. Speed at the converged steps: realisation-seconds of
-// simulated time per wall-second per core; MuJoCo one realisation after another on one core (its
-// users' way), caskdem's ensemble engine on one thread. Both are timed in this run.
+// the whole-step one (0.05 among them, an ensemble's default), MuJoCo at dt 0.125 ms .. 4 ms with
+// its default integrator (semi-implicit Euler) and at 0.5 .. 4 ms with its RK4, which is judged
+// against the Euler integrator's finest step (the same model and contact, so the same limit). A
+// step converges when every finer step's median and beta of both limit states differ from the
+// reference's (the finest step's) by less than a quarter of that answer's band at the reference.
+// Two bands judge the steps (Band, below): the record-to-record band an ensemble of several
+// motions reports, and the narrower band of the realisations with the six records fixed; each
+// code is timed at the step each band's criterion converged at.
+// Speed at the converged steps: realisation-seconds of simulated time per wall-second per core;
+// MuJoCo one realisation after another on one core (its users' way), caskdem's ensemble engine on
+// one thread. Both are timed in this run. The convergence tables are printed first (PEER_TABLE=FILE
+// writes them to FILE as well).
 
 #include <algorithm>
+#include <array>
 #include <chrono>
+#include <cstdarg>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -94,7 +105,7 @@ Outcomes caskdem_outcomes(std::int32_t slider, double safety_factor, int threads
   return o;
 }
 
-Outcomes mujoco_outcomes(double time_step, int threads) {
+Outcomes mujoco_outcomes(double time_step, int threads, const char* integrator = "Euler") {
   const EnsemblePlan plan(peer_spec(0, 0.01), InstructionSet::automatic);  // the draws, not the step
   const Peer& p = peer();
   const double alpha = std::atan(p.half_width / (0.5 * p.height));
@@ -105,7 +116,7 @@ Outcomes mujoco_outcomes(double time_step, int threads) {
   std::vector<std::thread> workers;
   for (int t = 0; t < threads; ++t) {
     workers.emplace_back([&, t] {
-      const auto model = mujoco_model(time_step, kPeerFriction);  // one model a core, its friction set per realisation
+      const auto model = mujoco_model(time_step, kPeerFriction, integrator);  // one model a core, its friction set per realisation
       for (std::int64_t i = t; i < plan.size(); i += threads) {
         const RealisationInput r = plan.realisation(i);
         set_mujoco_friction(model->model, r.parameters.friction_static);
@@ -145,99 +156,172 @@ double quantile(std::vector<double> v, double q) {
   return v.empty() ? NAN : v[static_cast<std::size_t>(std::lround(q * (v.size() - 1)))];
 }
 
-// The largest step (steps finest first) from which every finer step's answers are within a
-// quarter band of the finest's, printed as a table.
+// The convergence tables go to stdout and, when PEER_TABLE names a file, to that file too.
+void say(const char* format, ...) __attribute__((format(printf, 1, 2)));
+void say(const char* format, ...) {
+  static std::FILE* table = std::getenv("PEER_TABLE") ? std::fopen(std::getenv("PEER_TABLE"), "w") : nullptr;
+  std::va_list args;
+  va_start(args, format);
+  std::va_list copy;
+  va_copy(copy, args);
+  std::vprintf(format, args);
+  if (table) {
+    std::vfprintf(table, format, copy);
+    std::fflush(table);
+  }
+  va_end(copy);
+  va_end(args);
+}
+
+// Which band a step is judged by. Both resample the plan's realisations 200 times, the same
+// draws at every step: `stripes` resamples each stripe's realisations (the six records fixed,
+// the band of the realisations drawn under them), `motions` resamples the six records, each with
+// all its realisations (the record-to-record band, the one an ensemble of several motions
+// reports and the default-step study judges by: docs/time-step.md). The first is the narrower.
+enum Band { stripes = 0, motions = 1 };
+constexpr const char* kBandName[] = {"stripes resampled", "motions resampled"};
+
+// The largest step from which every finer step's answers are within a quarter band of the
+// reference's (runs[0], labelled `reference`: the finest step of this code, or of the same model
+// under another integrator), under each band, printed as a table. steps[0] is the reference's
+// step; a code none of whose own steps converges gets step 0.
 struct Converged {
   double step = 0.0;
   double worst = 0.0;  // the largest |difference| / (band / 4) at that step
 };
 
-Converged converge(const char* name, const std::vector<double>& steps, const std::vector<Outcomes>& runs) {
+std::array<Converged, 2> converge(const char* name, const char* reference, const std::vector<double>& steps,
+                                  const std::vector<Outcomes>& runs, bool reference_is_own_step) {
   const EnsemblePlan plan(peer_spec(0, 0.01), InstructionSet::automatic);
-  std::vector<std::vector<std::int64_t>> by_stripe(plan.spec().levels.size());
-  for (std::int64_t i = 0; i < plan.size(); ++i) by_stripe[plan.realisation(i).stripe].push_back(i);
+  std::vector<std::vector<std::int64_t>> by_stripe(plan.spec().levels.size()), by_motion(plan.spec().motions.size());
+  for (std::int64_t i = 0; i < plan.size(); ++i) {
+    by_stripe[plan.realisation(i).stripe].push_back(i);
+    by_motion[plan.realisation(i).motion].push_back(i);
+  }
   std::mt19937_64 random(2026);
-  std::vector<std::vector<std::int64_t>> samples(kReplicates);
-  for (auto& sample : samples) {
+  std::array<std::vector<std::vector<std::int64_t>>, 2> samples;
+  samples[stripes].resize(kReplicates);
+  samples[motions].resize(kReplicates);
+  for (auto& sample : samples[stripes]) {
     for (const auto& stripe : by_stripe) {
       std::uniform_int_distribution<std::size_t> pick(0, stripe.size() - 1);
       for (std::size_t k = 0; k < stripe.size(); ++k) sample.push_back(stripe[pick(random)]);
     }
   }
+  for (auto& sample : samples[motions]) {
+    std::uniform_int_distribution<std::size_t> pick(0, by_motion.size() - 1);
+    for (std::size_t m = 0; m < by_motion.size(); ++m) {
+      const auto& chosen = by_motion[pick(random)];
+      sample.insert(sample.end(), chosen.begin(), chosen.end());
+    }
+  }
   std::vector<std::int64_t> all(plan.size());
   for (std::int64_t i = 0; i < plan.size(); ++i) all[i] = i;
-  Converged best{steps[0], 0.0};
-  bool converged = true;
-  double bands[2][2] = {};  // [limit state][median, beta]: a quarter of the finest step's band
+  std::array<Converged, 2> best;
+  best.fill({reference_is_own_step ? steps[0] : 0.0, 0.0});
+  bool converged[2] = {true, true};
+  double bands[2][2][2] = {};  // [band][limit state][median, beta]: a quarter of the reference's band
   Answer finest[2];
   for (std::size_t k = 0; k < steps.size(); ++k) {
-    double worst = 0.0;
-    std::printf("%s %-8g", name, steps[k]);
+    double worst[2] = {0.0, 0.0};
+    say("%s %-8g%s", k == 0 ? reference : name, steps[k], k == 0 ? " (reference)" : "");
     for (int l = 0; l < 2; ++l) {
       const auto& exceeded = l == 0 ? runs[k].tipped : runs[k].rocked;
       const fragility::LognormalFit f = fit(exceeded, all, plan);
       const Answer a{f.median, f.log_std, f.fitted};
       if (k == 0) {
-        std::vector<double> medians, betas;
-        for (const auto& s : samples) {
-          const fragility::LognormalFit b = fit(exceeded, s, plan);
-          if (!b.fitted) continue;
-          medians.push_back(b.median / a.median);
-          betas.push_back(b.log_std);
+        for (int b = 0; b < 2; ++b) {
+          std::vector<double> medians, betas;
+          for (const auto& sample : samples[b]) {
+            const fragility::LognormalFit r = fit(exceeded, sample, plan);
+            if (!r.fitted) continue;
+            medians.push_back(r.median / a.median);
+            betas.push_back(r.log_std);
+          }
+          bands[b][l][0] = (quantile(medians, 0.975) - quantile(medians, 0.025)) / 4.0;
+          bands[b][l][1] = (quantile(betas, 0.975) - quantile(betas, 0.025)) / 4.0;
         }
-        bands[l][0] = (quantile(medians, 0.975) - quantile(medians, 0.025)) / 4.0;
-        bands[l][1] = (quantile(betas, 0.975) - quantile(betas, 0.025)) / 4.0;
         finest[l] = a;
       }
-      // A curve the finest step cannot fit has no band to judge by: left out (printed as such).
+      // A curve the reference cannot fit has no band to judge by: left out (printed as such).
       const double dm = a.fitted ? a.median / finest[l].median - 1.0 : INFINITY;
       const double db = a.fitted ? a.beta - finest[l].beta : INFINITY;
-      if (finest[l].fitted) worst = std::max({worst, std::abs(dm) / bands[l][0], std::abs(db) / bands[l][1]});
-      if (!finest[l].fitted && k == 0) std::printf("  (%s not fitted at the finest step: left out)", l == 0 ? "tip-over" : "rocking > alpha/2");
-      std::printf("  %s median %.4f g (%+.2f %%, band/4 %.2f %%) beta %.3f (%+.3f, band/4 %.3f)",
-                  l == 0 ? "tip-over" : "rocking > alpha/2", units::si_to_g(a.median), 100.0 * dm,
-                  100.0 * bands[l][0], a.beta, db, bands[l][1]);
+      for (int b = 0; b < 2; ++b) {
+        if (finest[l].fitted)
+          worst[b] = std::max({worst[b], std::abs(dm) / bands[b][l][0], std::abs(db) / bands[b][l][1]});
+      }
+      if (!finest[l].fitted && k == 0) say("  (%s not fitted at the reference: left out)", l == 0 ? "tip-over" : "rocking > alpha/2");
+      say("  %s median %.4f g (%+.2f %%, band/4 %.2f %% / %.2f %%) beta %.3f (%+.3f, band/4 %.3f / %.3f)",
+          l == 0 ? "tip-over" : "rocking > alpha/2", units::si_to_g(a.median), 100.0 * dm, 100.0 * bands[stripes][l][0],
+          100.0 * bands[motions][l][0], a.beta, db, bands[stripes][l][1], bands[motions][l][1]);
     }
-    std::printf("  worst %.2f x band/4\n", worst);
-    converged = converged && worst < 1.0;
-    if (converged) best = {steps[k], worst};
+    say("  worst %.2f / %.2f x band/4 (%s / %s)\n", worst[stripes], worst[motions], kBandName[stripes],
+        kBandName[motions]);
+    if (k == 0) continue;
+    for (int b = 0; b < 2; ++b) {
+      converged[b] = converged[b] && worst[b] < 1.0;
+      if (converged[b]) best[b] = {steps[k], worst[b]};
+    }
   }
   return best;
 }
 
 struct Study {
-  Converged half_step, whole_step, mujoco;
+  std::array<Converged, 2> half_step, whole_step, mujoco, mujoco_rk4;
 };
 
 const Study& study() {
   static const Study s = [] {
     Study r;
-    const std::vector<double> fs = {0.0025, 0.005, 0.01, 0.02, 0.04, 0.08};
+    say("%d realisations (%d a stripe), MuJoCo %d; each row's band/4 under stripes resampled / motions resampled\n",
+        static_cast<int>(kLevelsG.size()) * kPerStripe, kPerStripe, mj_version());
+    const std::vector<double> fs = {0.0025, 0.005, 0.01, 0.02, 0.04, 0.05, 0.08};
     for (std::int32_t slider : {std::int32_t(0), std::int32_t(kWholeStepSlider)}) {
       std::vector<Outcomes> runs;
       for (double f : fs) runs.push_back(caskdem_outcomes(slider, f, 2));
       const std::string name = "caskdem " + slider_name_of(slider) + " f_s";
-      (slider ? r.whole_step : r.half_step) = converge(name.c_str(), fs, runs);
+      (slider ? r.whole_step : r.half_step) = converge(name.c_str(), name.c_str(), fs, runs, true);
     }
     const std::vector<double> dt = {1.25e-4, 2.5e-4, 5e-4, 1e-3, 2e-3, 4e-3};
     std::vector<Outcomes> runs;
     for (double d : dt) runs.push_back(mujoco_outcomes(d, 2));
-    r.mujoco = converge("MuJoCo dt", dt, runs);
+    r.mujoco = converge("MuJoCo Euler dt", "MuJoCo Euler dt", dt, runs, true);
+    // RK4 (four evaluations a step) from 0.5 ms, against the Euler integrator's finest step: the
+    // same model, so the same limit.
+    const std::vector<double> dt_rk4 = {dt[0], 5e-4, 1e-3, 2e-3, 4e-3};
+    std::vector<Outcomes> rk4 = {runs[0]};
+    for (std::size_t k = 1; k < dt_rk4.size(); ++k) rk4.push_back(mujoco_outcomes(dt_rk4[k], 2, "RK4"));
+    r.mujoco_rk4 = converge("MuJoCo RK4 dt", "MuJoCo Euler dt", dt_rk4, rk4, false);
+    for (int b = 0; b < 2; ++b) {
+      say("converged, %s: caskdem half-step f_s %g, whole-step f_s %g; MuJoCo Euler dt %g s, RK4 dt %g s\n",
+          kBandName[b], r.half_step[b].step, r.whole_step[b].step, r.mujoco[b].step, r.mujoco_rk4[b].step);
+    }
     return r;
   }();
   return s;
 }
 
-void mujoco_fragility_speed(benchmark::State& state) {
-  const double dt = study().mujoco.step;
+void mujoco_fragility_speed(benchmark::State& state, const char* integrator, Band band) {
+  const bool rk4 = std::string(integrator) == "RK4";
+  const double dt = (rk4 ? study().mujoco_rk4 : study().mujoco)[band].step;
+  if (dt == 0.0) {
+    state.SkipWithError("no step of this integrator converged");
+    return;
+  }
+  // RK4 takes four evaluations a step: at no more than four times the Euler integrator's step
+  // it cannot be the faster, and is not timed.
+  if (rk4 && dt <= 4.0 * study().mujoco[band].step) {
+    state.SkipWithError("RK4's converged step is within four times Euler's: slower than Euler, not timed");
+    return;
+  }
   double simulated = 0.0;
-  for (auto _ : state) simulated += mujoco_outcomes(dt, 1).simulated;
+  for (auto _ : state) simulated += mujoco_outcomes(dt, 1, integrator).simulated;
   state.counters["time_step_s"] = dt;
   state.counters["realisation_seconds_per_wall_second"] = benchmark::Counter(simulated, benchmark::Counter::kIsRate);
 }
 
-void caskdem_fragility_speed(benchmark::State& state, std::int32_t slider) {
-  const double fs = slider ? study().whole_step.step : study().half_step.step;
+void caskdem_fragility_speed(benchmark::State& state, std::int32_t slider, Band band) {
+  const double fs = (slider ? study().whole_step : study().half_step)[band].step;
   double simulated = 0.0;
   for (auto _ : state) simulated += caskdem_outcomes(slider, fs, 1).simulated;
   state.counters["safety_factor"] = fs;
@@ -246,12 +330,17 @@ void caskdem_fragility_speed(benchmark::State& state, std::int32_t slider) {
 
 }  // namespace
 
-BENCHMARK(mujoco_fragility_speed)->Unit(benchmark::kSecond)->UseRealTime()->MinTime(5.0);
-BENCHMARK_CAPTURE(caskdem_fragility_speed, half_step, 0)->Unit(benchmark::kSecond)->UseRealTime()->MinTime(5.0);
-BENCHMARK_CAPTURE(caskdem_fragility_speed, whole_step, kWholeStepSlider)
-    ->Unit(benchmark::kSecond)
-    ->UseRealTime()
-    ->MinTime(5.0);
+// Each code at the step each band's criterion converged at: the band in the name.
+#define CASKDEM_PEER_BENCHMARKS(band)                                                                          \
+  BENCHMARK_CAPTURE(mujoco_fragility_speed, euler_##band, "Euler", band)                                       \
+      ->Unit(benchmark::kSecond)->UseRealTime()->MinTime(5.0);                                                 \
+  BENCHMARK_CAPTURE(mujoco_fragility_speed, rk4_##band, "RK4", band)->Unit(benchmark::kSecond)->UseRealTime()->MinTime(5.0); \
+  BENCHMARK_CAPTURE(caskdem_fragility_speed, half_step_##band, 0, band)                                        \
+      ->Unit(benchmark::kSecond)->UseRealTime()->MinTime(5.0);                                                 \
+  BENCHMARK_CAPTURE(caskdem_fragility_speed, whole_step_##band, kWholeStepSlider, band)                        \
+      ->Unit(benchmark::kSecond)->UseRealTime()->MinTime(5.0)
+CASKDEM_PEER_BENCHMARKS(stripes);
+CASKDEM_PEER_BENCHMARKS(motions);
 
 }  // namespace caskdem::bench
 
@@ -261,9 +350,13 @@ int main(int argc, char** argv) {
   const auto& s = caskdem::bench::study();  // printed, before the timed runs
   benchmark::AddCustomContext("realisations",
                               std::to_string(caskdem::bench::kLevelsG.size() * caskdem::bench::kPerStripe));
-  benchmark::AddCustomContext("caskdem_half_step_converged_safety_factor", std::to_string(s.half_step.step));
-  benchmark::AddCustomContext("caskdem_whole_step_converged_safety_factor", std::to_string(s.whole_step.step));
-  benchmark::AddCustomContext("mujoco_converged_time_step", std::to_string(s.mujoco.step));
+  for (int b = 0; b < 2; ++b) {
+    const std::string band = b == caskdem::bench::stripes ? "stripes" : "motions";
+    benchmark::AddCustomContext("caskdem_half_step_converged_safety_factor_" + band, std::to_string(s.half_step[b].step));
+    benchmark::AddCustomContext("caskdem_whole_step_converged_safety_factor_" + band, std::to_string(s.whole_step[b].step));
+    benchmark::AddCustomContext("mujoco_converged_time_step_" + band, std::to_string(s.mujoco[b].step));
+    benchmark::AddCustomContext("mujoco_rk4_converged_time_step_" + band, std::to_string(s.mujoco_rk4[b].step));
+  }
   benchmark::RunSpecifiedBenchmarks();
   benchmark::Shutdown();
   return 0;

@@ -77,12 +77,13 @@ struct MujocoModel {
   ~MujocoModel() { mj_deleteModel(model); }
 };
 
-inline std::unique_ptr<MujocoModel> mujoco_model(double time_step, double friction) {
+// integrator: MuJoCo's own name, "Euler" (its default, semi-implicit) or "RK4".
+inline std::unique_ptr<MujocoModel> mujoco_model(double time_step, double friction, const char* integrator = "Euler") {
   const Peer& p = peer();
   char xml[2048];
   std::snprintf(xml, sizeof xml,
                 "<mujoco model='cask'>"
-                "<option timestep='%.17g' gravity='0 0 -9.80665'/>"
+                "<option timestep='%.17g' gravity='0 0 -9.80665' integrator='%s'/>"
                 "<worldbody>"
                 "<geom type='plane' size='10 10 0.1' friction='%g 0.005 0.0001'/>"
                 "<body name='cask' pos='0 0 %.17g'>"
@@ -91,7 +92,7 @@ inline std::unique_ptr<MujocoModel> mujoco_model(double time_step, double fricti
                 "<joint name='rocking' type='hinge' axis='0 1 0'/>"
                 "<geom type='box' size='%.17g %.17g %.17g' mass='%.17g' friction='%g 0.005 0.0001'/>"
                 "</body></worldbody></mujoco>",
-                time_step, friction, 0.5 * p.height, p.half_width, p.half_width, 0.5 * p.height, p.mass, friction);
+                time_step, integrator, friction, 0.5 * p.height, p.half_width, p.half_width, 0.5 * p.height, p.mass, friction);
   // A file of its own per call: threads may load models side by side.
   static std::atomic<long> serial{0};
   const auto path = std::filesystem::temp_directory_path() /
