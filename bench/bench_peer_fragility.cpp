@@ -43,6 +43,7 @@
 
 #include <benchmark/benchmark.h>
 
+#include "bench/paired_bootstrap.h"
 #include "bench/peer_cask.h"
 #include "ensemble/ensemble_file.h"
 #include "ensemble/fragility.h"
@@ -200,21 +201,8 @@ std::array<Converged, 2> converge(const char* name, const char* reference, const
   }
   std::mt19937_64 random(2026);
   std::array<std::vector<std::vector<std::int64_t>>, 2> samples;
-  samples[stripes].resize(kReplicates);
-  samples[motions].resize(kReplicates);
-  for (auto& sample : samples[stripes]) {
-    for (const auto& stripe : by_stripe) {
-      std::uniform_int_distribution<std::size_t> pick(0, stripe.size() - 1);
-      for (std::size_t k = 0; k < stripe.size(); ++k) sample.push_back(stripe[pick(random)]);
-    }
-  }
-  for (auto& sample : samples[motions]) {
-    std::uniform_int_distribution<std::size_t> pick(0, by_motion.size() - 1);
-    for (std::size_t m = 0; m < by_motion.size(); ++m) {
-      const auto& chosen = by_motion[pick(random)];
-      sample.insert(sample.end(), chosen.begin(), chosen.end());
-    }
-  }
+  for (int k = 0; k < kReplicates; ++k) samples[stripes].push_back(resample_stripes(by_stripe, random));
+  for (int k = 0; k < kReplicates; ++k) samples[motions].push_back(resample_motions(by_motion, random));
   std::vector<std::int64_t> all(plan.size());
   for (std::int64_t i = 0; i < plan.size(); ++i) all[i] = i;
   std::array<Converged, 2> best;

@@ -36,6 +36,7 @@
 #include <string>
 #include <vector>
 
+#include "bench/paired_bootstrap.h"
 #include "core/error.h"
 #include "model/build.h"
 #include "ensemble/analysis.h"
@@ -245,22 +246,8 @@ int program(int argc, char** argv) {
   for (std::int64_t i = 0; i < size; ++i) everything[i] = i;
   std::mt19937_64 random(20261126);
   std::vector<std::vector<std::int64_t>> samples;
-  for (int b = 0; b < replicates; ++b) {
-    std::vector<std::int64_t> sample;
-    if (motions > 1) {
-      std::uniform_int_distribution<int> pick(0, motions - 1);
-      for (int m = 0; m < motions; ++m) {
-        const auto& chosen = by_motion[pick(random)];
-        sample.insert(sample.end(), chosen.begin(), chosen.end());
-      }
-    } else {
-      for (const auto& stripe : by_stripe) {
-        std::uniform_int_distribution<std::size_t> pick(0, stripe.size() - 1);
-        for (std::size_t k = 0; k < stripe.size(); ++k) sample.push_back(stripe[pick(random)]);
-      }
-    }
-    samples.push_back(std::move(sample));
-  }
+  for (int b = 0; b < replicates; ++b)
+    samples.push_back(motions > 1 ? bench::resample_motions(by_motion, random) : bench::resample_stripes(by_stripe, random));
 
   std::ofstream rows;
   if (!csv.empty()) {
